@@ -1,0 +1,303 @@
+//! The one door to the float backend.
+//!
+//! Every square root and transcendental function the crate evaluates goes
+//! through this file, so that a backend can be swapped (feature `fast-math`),
+//! stubbed by a proof harness, or replaced by a faster kernel in one place.
+//!
+//! - default: [`libm`], the Rust port of musl's libm (itself from FreeBSD's
+//!   msun). Its f32 kernels evaluate in f64 internally and are accurate to
+//!   within one ulp; the sweep tests at the bottom of this file measure each
+//!   one against `std`'s f64 functions.
+//! - `fast-math`: [`micromath`]'s approximations, smaller and faster, with
+//!   the much larger errors the sweep tests measure for them (see
+//!   [`crate::accuracy`]).
+//!
+//! It also holds [`scale_for_squares`], the overflow- and underflow-free sum of
+//! squares behind every `norm` and `normalize` of the crate.
+
+/// Square root. libm: correctly rounded (0.5 ulp). fast-math: micromath's
+/// bit-level estimate plus Newton steps (relative error measured by
+/// `sweep_sqrt` below).
+#[inline]
+#[must_use]
+pub(crate) fn sqrt(x: f32) -> f32 {
+    #[cfg(not(feature = "fast-math"))]
+    {
+        libm::sqrtf(x)
+    }
+    #[cfg(feature = "fast-math")]
+    {
+        micromath::F32Ext::sqrt(x)
+    }
+}
+
+/// Four-quadrant arctangent of `y / x`, in [-pi, pi]. libm: within 1 ulp
+/// (FreeBSD's `e_atan2f.c` argument reduction onto `atanf`). fast-math:
+/// micromath's polynomial, absolute error about 1e-3 rad (measured by
+/// `sweep_atan2` below).
+#[inline]
+#[must_use]
+pub(crate) fn atan2(y: f32, x: f32) -> f32 {
+    #[cfg(not(feature = "fast-math"))]
+    {
+        libm::atan2f(y, x)
+    }
+    #[cfg(feature = "fast-math")]
+    {
+        micromath::F32Ext::atan2(y, x)
+    }
+}
+
+/// Sine and cosine of `x` (radians), as `(sin, cos)`. libm: within 1 ulp for
+/// every finite `x`, with exact (Payne-Hanek) argument reduction for huge
+/// arguments. fast-math: micromath's parabola approximations, absolute error
+/// about 1e-3 (measured by `sweep_sin_cos` below).
+#[inline]
+#[must_use]
+pub(crate) fn sin_cos(x: f32) -> (f32, f32) {
+    #[cfg(not(feature = "fast-math"))]
+    {
+        libm::sincosf(x)
+    }
+    #[cfg(feature = "fast-math")]
+    {
+        (micromath::F32Ext::sin(x), micromath::F32Ext::cos(x))
+    }
+}
+
+/// Tangent of `x` (radians). libm: within 1 ulp. fast-math: micromath's
+/// `sin / cos`.
+#[inline]
+#[must_use]
+pub(crate) fn tan(x: f32) -> f32 {
+    #[cfg(not(feature = "fast-math"))]
+    {
+        libm::tanf(x)
+    }
+    #[cfg(feature = "fast-math")]
+    {
+        micromath::F32Ext::tan(x)
+    }
+}
+
+/// 2^-100: below this, a sum of squares may have lost precision to underflow.
+/// A component whose square underflows contributes at most 2^-150 of absolute
+/// error, so above this threshold the relative error it causes is at most
+/// 2^-50, far below one ulp (2^-24).
+const SQUARES_UNDERFLOW: f32 = f32::from_bits((127 - 100) << 23);
+/// 2^-60: components below this are scaled up by 2^100, the others by 2^40.
+const TINY: f32 = f32::from_bits((127 - 60) << 23);
+/// 2^100, exact scale for the smallest inputs (2^-149 becomes 2^-49).
+const SCALE_UP_TINY: f32 = f32::from_bits((127 + 100) << 23);
+/// 2^40, exact scale for small inputs in [2^-60, 2^-50).
+const SCALE_UP_SMALL: f32 = f32::from_bits((127 + 40) << 23);
+/// 2^-66, exact scale for huge inputs: f32::MAX (< 2^128) becomes < 2^62,
+/// whose square, times four, stays below 2^126.
+const SCALE_DOWN_HUGE: f32 = f32::from_bits((127 - 66) << 23);
+
+/// The components of a vector, scaled by an exact power of two, and the sum
+/// of their squares.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ScaledSquares {
+    /// The input components times `scale`.
+    pub(crate) v: [f32; 4],
+    /// The power of two the components were multiplied by (1 in the common case).
+    pub(crate) scale: f32,
+    /// The sum of the squares of `v` (NaN if any input was NaN, infinite if
+    /// any input was infinite, 0 only if every input was zero).
+    pub(crate) sum: f32,
+}
+
+impl ScaledSquares {
+    /// The Euclidean norm of the original, unscaled components (may round
+    /// to infinity when the true norm exceeds `f32::MAX`).
+    #[inline]
+    #[must_use]
+    pub(crate) fn norm(self) -> f32 {
+        sqrt(self.sum) / self.scale
+    }
+
+    /// The original components divided by their norm, or `None` if they are
+    /// all zero or any is NaN or infinite.
+    #[inline]
+    #[must_use]
+    pub(crate) fn unit(self) -> Option<[f32; 4]> {
+        if !(self.sum > 0.0 && self.sum <= f32::MAX) {
+            return None;
+        }
+        let n = sqrt(self.sum);
+        let [a, b, c, d] = self.v;
+        Some([a / n, b / n, c / n, d / n])
+    }
+}
+
+/// Sum of squares of `v` without overflow or underflow: the method of LAPACK's
+/// `xNRM2` and of C's `hypot`, with exact power-of-two scaling.
+///
+/// In the common case (the sum of squares lies in [2^-100, f32::MAX]) this is
+/// four multiplications and three additions with `scale == 1`. Otherwise the
+/// components are multiplied by a power of two chosen from the largest one,
+/// so that subnormal vectors (down to 2^-149) and vectors with components up
+/// to `f32::MAX` keep full precision. Error of the resulting norm: at most
+/// about 2 ulp from the four rounded squares and sums, plus the square root's.
+#[must_use]
+pub(crate) fn scale_for_squares(v: [f32; 4]) -> ScaledSquares {
+    let [a, b, c, d] = v;
+    let sum = a * a + b * b + c * c + d * d;
+    // `!(x >= lo)` is also true for NaN: NaN goes to the slow path, which keeps it.
+    if sum >= SQUARES_UNDERFLOW && sum <= f32::MAX {
+        return ScaledSquares { v, scale: 1.0, sum };
+    }
+    if sum.is_nan() {
+        return ScaledSquares { v, scale: 1.0, sum };
+    }
+    let largest = a.abs().max(b.abs()).max(c.abs()).max(d.abs());
+    if largest == 0.0 || largest == f32::INFINITY {
+        // All zero (the sum is exactly 0), or an infinite component (the sum is +inf).
+        return ScaledSquares { v, scale: 1.0, sum };
+    }
+    let scale = if sum > f32::MAX {
+        SCALE_DOWN_HUGE
+    } else if largest < TINY {
+        SCALE_UP_TINY
+    } else {
+        SCALE_UP_SMALL
+    };
+    let v = [a * scale, b * scale, c * scale, d * scale];
+    let [a, b, c, d] = v;
+    ScaledSquares {
+        v,
+        scale,
+        sum: a * a + b * b + c * c + d * d,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! Sweeps of each kernel against `std`'s f64 functions, as libm tests its
+    //! own: many points spread over the range `pow`, `slerp` and `perspective`
+    //! use, with the error measured in units in the last place of the f32
+    //! result.
+    use super::*;
+    use crate::accuracy;
+
+    /// Distance from `got` to the exact `want`, in ulps of `want` rounded to f32.
+    fn ulps(got: f32, want: f64) -> f64 {
+        let w = want as f32;
+        let ulp = (f32::from_bits(w.abs().to_bits() + 1) - w.abs()) as f64;
+        (got as f64 - want).abs() / ulp
+    }
+
+    /// `n` points evenly spread over [lo, hi], endpoints included.
+    fn spread(lo: f64, hi: f64, n: usize) -> impl Iterator<Item = f32> {
+        (0..=n).map(move |i| (lo + (hi - lo) * i as f64 / n as f64) as f32)
+    }
+
+    #[test]
+    fn sweep_sqrt() {
+        let mut worst: f64 = 0.0;
+        for x in spread(0.0, 4.0, 200_000).chain(spread(1e-30, 1e30, 10_000)) {
+            worst = worst.max(ulps(sqrt(x), (x as f64).sqrt()) * f32::EPSILON as f64);
+        }
+        std::println!("sqrt: max relative error {worst:.3e}");
+        assert!(worst <= accuracy::SQRT_MAX_REL_ERROR as f64, "{worst}");
+    }
+
+    #[test]
+    fn sweep_atan2() {
+        let mut worst: f64 = 0.0;
+        let pi = core::f64::consts::PI;
+        for t in spread(-pi, pi, 200_000) {
+            let (y, x) = ((t as f64).sin() as f32, (t as f64).cos() as f32);
+            let want = (y as f64).atan2(x as f64);
+            worst = worst.max((atan2(y, x) as f64 - want).abs());
+        }
+        std::println!("atan2: max absolute error {worst:.3e} rad");
+        assert!(worst <= accuracy::ATAN2_MAX_ABS_ERROR as f64, "{worst}");
+    }
+
+    #[test]
+    fn sweep_sin_cos() {
+        let mut worst: f64 = 0.0;
+        for x in spread(-10.0, 10.0, 400_000) {
+            let (s, c) = sin_cos(x);
+            worst = worst
+                .max((s as f64 - (x as f64).sin()).abs())
+                .max((c as f64 - (x as f64).cos()).abs());
+        }
+        std::println!("sin_cos: max absolute error {worst:.3e}");
+        assert!(worst <= accuracy::SIN_COS_MAX_ABS_ERROR as f64, "{worst}");
+    }
+
+    #[test]
+    fn sin_cos_of_huge_arguments_stays_in_range() {
+        for x in [1e10_f32, -3e20, 1e38, f32::MAX, -f32::MAX] {
+            let (s, c) = sin_cos(x);
+            assert!(s.abs() <= 1.0 && c.abs() <= 1.0, "{x}: {s} {c}");
+        }
+    }
+
+    #[test]
+    fn sweep_tan() {
+        let mut worst: f64 = 0.0;
+        // Half of a field of view between 1 and 179 degrees.
+        for x in spread(0.0087, 1.5621, 100_000) {
+            let want = (x as f64).tan();
+            worst = worst.max((tan(x) as f64 - want).abs() / want);
+        }
+        std::println!("tan: max relative error {worst:.3e}");
+        assert!(worst <= accuracy::TAN_MAX_REL_ERROR as f64, "{worst}");
+    }
+
+    #[test]
+    fn scaled_norm_is_exact_to_an_ulp_from_subnormal_to_max() {
+        let cases: [[f32; 4]; 7] = [
+            [3.0, 4.0, 0.0, 0.0],
+            [3e-45, 4e-45, 0.0, 0.0],
+            [1e-30, 1e-30, 1e-30, 1e-30],
+            [f32::MAX, 0.0, 0.0, 0.0],
+            [1e30, 1e30, 1e30, 1e30],
+            [f32::MAX / 2.0, f32::MAX / 2.0, 0.0, 0.0],
+            [1e-20, 0.0, 0.0, 1e-20],
+        ];
+        for v in cases {
+            let exact = v
+                .iter()
+                .map(|&c| (c as f64) * (c as f64))
+                .sum::<f64>()
+                .sqrt();
+            let got = scale_for_squares(v).norm();
+            // Subnormal results have coarser ulps; compare relative to f32 ulps of the exact norm.
+            assert!(ulps(got, exact) <= 2.0, "{v:?}: {got} vs {exact}");
+        }
+    }
+
+    #[test]
+    fn unit_of_degenerate_vectors_is_none() {
+        assert!(scale_for_squares([0.0; 4]).unit().is_none());
+        assert!(scale_for_squares([f32::NAN, 1.0, 0.0, 0.0])
+            .unit()
+            .is_none());
+        assert!(scale_for_squares([f32::INFINITY, 1.0, 0.0, 0.0])
+            .unit()
+            .is_none());
+        let u = scale_for_squares([1e-45, 0.0, 0.0, 0.0]).unit();
+        assert_eq!(u, Some([1.0, 0.0, 0.0, 0.0]));
+        let [a, b, c, d] = scale_for_squares([f32::MAX, f32::MAX, 0.0, 0.0])
+            .unit()
+            .expect("finite");
+        let h = core::f64::consts::FRAC_1_SQRT_2;
+        assert!(ulps(a, h) <= 1.0 && ulps(b, h) <= 1.0, "{a} {b}");
+        assert_eq!((c, d), (0.0, 0.0));
+    }
+
+    #[test]
+    fn nan_and_infinity_survive_the_norm() {
+        assert!(scale_for_squares([f32::NAN, 0.0, 0.0, 0.0]).norm().is_nan());
+        assert_eq!(
+            scale_for_squares([f32::NEG_INFINITY, 0.0, 0.0, 0.0]).norm(),
+            f32::INFINITY
+        );
+        assert_eq!(scale_for_squares([0.0, -0.0, 0.0, 0.0]).norm(), 0.0);
+    }
+}

@@ -1,0 +1,94 @@
+//! `rigtform`: f32 rotation quaternions and rigid body transforms for
+//! microcontroller IMU firmware and for renderers. `#![no_std]`, no heap, no
+//! panics, one required dependency (`libm`).
+//!
+//! It implements the quaternion lecture notes of CS175 (Gortler,
+//! *Foundations of 3D Computer Graphics*, chapters 7 and 8): [`Quat`] with
+//! the power operator `pow` (atan2 and conditional negation `cn`), `slerp`,
+//! [`RigTForm`] (translation plus rotation quaternion, with its product,
+//! inverse and interpolation) and the few [`Matrix4`]s a renderer still
+//! needs (projection, model-view, normal matrix).
+//!
+//! # Conventions
+//!
+//! - Quaternions are scalar first: `Quat { w, x, y, z }`, `Quat::new(w, x, y, z)`.
+//!   A rotation by `theta` about the unit axis `k` is `[cos(theta/2), sin(theta/2) k]`.
+//! - `*` is the Hamilton product (`i j = k`), and `a * b` applies `b`
+//!   first, then `a`, as rotation matrices and [`RigTForm`]s do.
+//! - `q` and `-q` are the same rotation. Compare rotations with
+//!   [`Quat::angle_to`], never component by component.
+//! - Right-handed coordinates, right-hand rule for positive angles, angles
+//!   in radians.
+//! - Column vectors (`m * v`); [`Matrix4`] is stored column-major (OpenGL).
+//! - [`Cvec4`] is homogeneous: `w = 1` for a point, `w = 0` for a vector,
+//!   which translations leave alone.
+//!
+//! # Numerics contract
+//!
+//! 1. No function panics, for any input bits: there is no `unwrap`, no
+//!    fallible indexing and no integer arithmetic that can overflow.
+//! 2. Bad input gets a documented result: NaN out for NaN or infinite in,
+//!    `None` for a singular matrix, [`Quat::IDENTITY`] where there is no
+//!    rotation to speak of (each method says which).
+//! 3. [`Quat::pow`] returns a unit quaternion for every finite non-zero
+//!    input (unit or not, subnormal or huge), and [`Quat::slerp`] always
+//!    takes the short way, with finite unit results for identical, nearly
+//!    identical, antipodal and opposite inputs.
+//! 4. Products and slerps of unit quaternions stay unit within
+//!    [`accuracy::UNIT_NORM_ERROR`]; [`Quat::normalize`] removes drift.
+//! 5. Every accuracy figure in these docs is a constant of [`accuracy`],
+//!    which the tests assert against an f64 reference.
+//!
+//! # Example
+//!
+//! ```
+//! use core::f32::consts::PI;
+//! use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+//!
+//! // Two keyframes of an object, and the frame halfway between them.
+//! let a = RigTForm::new(Cvec3::new(0.0, 0.0, 0.0), Quat::IDENTITY);
+//! let b = RigTForm::new(Cvec3::new(4.0, 0.0, 0.0), Quat::from_rotation_y(PI / 2.0));
+//! let mid = a.interpolate(b, 0.5);
+//! assert_eq!(mid.t, Cvec3::new(2.0, 0.0, 0.0));
+//! assert!(mid.r.angle_to(Quat::from_rotation_y(PI / 4.0)) < 1e-6);
+//!
+//! // Points move with the frame; vectors only turn.
+//! let p = mid * Cvec4::from_point(Cvec3::Z);
+//! let v = mid * Cvec4::from_vector(Cvec3::Z);
+//! assert!((p.xyz() - v.xyz() - mid.t).norm() < 1e-6);
+//!
+//! // The renderer's model-view matrix, from eye and object frames.
+//! let eye = RigTForm::from_translation(Cvec3::new(0.0, 1.0, 8.0));
+//! let mvm = Matrix4::from(eye.inv() * mid);
+//! let nmvm = mvm.normal_matrix().expect("a rigid motion is invertible");
+//! assert!((nmvm.cols[0] - mvm.cols[0]).norm() < 1e-6); // rotation only
+//! ```
+//!
+//! # Features
+//!
+//! | feature | what it adds |
+//! | --- | --- |
+//! | (default) | `libm` as the float backend: accurate to about an ulp per kernel |
+//! | `fast-math` | `micromath` approximations instead: smaller and faster, far less accurate (see [`accuracy`]) |
+//! | `defmt` | `defmt::Format` for every public type, for logging on target |
+//! | `mint` | `From` conversions to and from `mint` types (interop with glam, nalgebra, cgmath) |
+//!
+//! The library never needs `std`.
+
+#![cfg_attr(not(test), no_std)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
+#![deny(missing_docs)]
+#![forbid(unsafe_code)]
+
+pub mod accuracy;
+mod features;
+mod float;
+mod matrix;
+mod quat;
+mod rigtform;
+mod vec;
+
+pub use matrix::Matrix4;
+pub use quat::Quat;
+pub use rigtform::RigTForm;
+pub use vec::{Cvec3, Cvec4};

@@ -1,0 +1,432 @@
+//! [`Matrix4`]: the few 4x4 matrices that survive in the renderer (the
+//! notes' "more code"): the projection, the model-view matrix (MVM, with a
+//! scale on the right) and the normal matrix (NMVM).
+
+use core::ops::Mul;
+
+use crate::float;
+use crate::quat::Quat;
+use crate::rigtform::RigTForm;
+use crate::vec::{Cvec3, Cvec4};
+
+/// A 4x4 matrix in OpenGL conventions: column vectors (`m * v`), stored
+/// column-major, so [`to_cols_array`](Self::to_cols_array) can go straight to
+/// `glUniformMatrix4fv` with `transpose = false`.
+///
+/// # Examples
+///
+/// ```
+/// use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+/// let a = RigTForm::new(Cvec3::new(0.0, 0.0, -5.0), Quat::from_rotation_y(0.3));
+/// let mvm = Matrix4::from(a) * Matrix4::from_scale(Cvec3::new(2.0, 2.0, 2.0));
+/// let p = Cvec4::from_point(Cvec3::X);
+/// assert!((mvm * p - a * Cvec4::from_point(Cvec3::X * 2.0)).norm() < 1e-5);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[repr(C)]
+pub struct Matrix4 {
+    /// The four columns; `cols[3]` holds the translation of an affine map.
+    pub cols: [Cvec4; 4],
+}
+
+impl Default for Matrix4 {
+    /// The identity matrix.
+    fn default() -> Self {
+        Self::IDENTITY
+    }
+}
+
+impl Matrix4 {
+    /// The identity matrix.
+    pub const IDENTITY: Self = Self::from_cols(
+        Cvec4::new(1.0, 0.0, 0.0, 0.0),
+        Cvec4::new(0.0, 1.0, 0.0, 0.0),
+        Cvec4::new(0.0, 0.0, 1.0, 0.0),
+        Cvec4::new(0.0, 0.0, 0.0, 1.0),
+    );
+
+    /// Builds a matrix from its four columns.
+    ///
+    /// ```
+    /// use rigtform::{Cvec4, Matrix4};
+    /// let m = Matrix4::from_cols(
+    ///     Cvec4::new(1.0, 0.0, 0.0, 0.0),
+    ///     Cvec4::new(0.0, 1.0, 0.0, 0.0),
+    ///     Cvec4::new(0.0, 0.0, 1.0, 0.0),
+    ///     Cvec4::new(0.0, 0.0, 0.0, 1.0),
+    /// );
+    /// assert_eq!(m, Matrix4::IDENTITY);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_cols(c0: Cvec4, c1: Cvec4, c2: Cvec4, c3: Cvec4) -> Self {
+        Self {
+            cols: [c0, c1, c2, c3],
+        }
+    }
+
+    /// Builds a matrix from 16 entries in column-major order (the inverse
+    /// of [`to_cols_array`](Self::to_cols_array)).
+    ///
+    /// ```
+    /// use rigtform::Matrix4;
+    /// let a = Matrix4::from_cols_array(&core::array::from_fn(|i| i as f32));
+    /// assert_eq!(a.cols[1].x, 4.0);
+    /// assert_eq!(Matrix4::from_cols_array(&a.to_cols_array()), a);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_cols_array(m: &[f32; 16]) -> Self {
+        Self::from_cols(
+            Cvec4::new(m[0], m[1], m[2], m[3]),
+            Cvec4::new(m[4], m[5], m[6], m[7]),
+            Cvec4::new(m[8], m[9], m[10], m[11]),
+            Cvec4::new(m[12], m[13], m[14], m[15]),
+        )
+    }
+
+    /// The 16 entries in column-major order, as OpenGL takes them.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix4};
+    /// let m = Matrix4::from_translation(Cvec3::new(1.0, 2.0, 3.0)).to_cols_array();
+    /// assert_eq!(&m[12..], &[1.0, 2.0, 3.0, 1.0]);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn to_cols_array(self) -> [f32; 16] {
+        let [a, b, c, d] = self.cols;
+        [
+            a.x, a.y, a.z, a.w, b.x, b.y, b.z, b.w, c.x, c.y, c.z, c.w, d.x, d.y, d.z, d.w,
+        ]
+    }
+
+    /// The translation `T` by `t` (the notes' `makeTranslation`).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Cvec4, Matrix4};
+    /// let m = Matrix4::from_translation(Cvec3::new(1.0, 2.0, 3.0));
+    /// assert_eq!(m * Cvec4::new(0.0, 0.0, 0.0, 1.0), Cvec4::new(1.0, 2.0, 3.0, 1.0));
+    /// assert_eq!(m * Cvec4::new(1.0, 0.0, 0.0, 0.0), Cvec4::new(1.0, 0.0, 0.0, 0.0));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_translation(t: Cvec3) -> Self {
+        let i = Self::IDENTITY.cols;
+        Self::from_cols(i[0], i[1], i[2], Cvec4::from_point(t))
+    }
+
+    /// The scale by `s.x`, `s.y`, `s.z` along the axes (the object scaling a
+    /// `RigTForm` cannot hold; multiply it on the right of the MVM).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Cvec4, Matrix4};
+    /// let m = Matrix4::from_scale(Cvec3::new(2.0, 3.0, 4.0));
+    /// assert_eq!(m * Cvec4::new(1.0, 1.0, 1.0, 1.0), Cvec4::new(2.0, 3.0, 4.0, 1.0));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_scale(s: Cvec3) -> Self {
+        Self::from_cols(
+            Cvec4::new(s.x, 0.0, 0.0, 0.0),
+            Cvec4::new(0.0, s.y, 0.0, 0.0),
+            Cvec4::new(0.0, 0.0, s.z, 0.0),
+            Cvec4::new(0.0, 0.0, 0.0, 1.0),
+        )
+    }
+
+    /// The rotation matrix of a unit quaternion (the notes' `makeRotation`):
+    /// `from_quat(q) * v == q * v` for every vector `v`.
+    ///
+    /// # Preconditions
+    ///
+    /// `q` is a unit quaternion (the entries use `1 - 2(y^2 + z^2)` and
+    /// friends, which assume it). `q` and `-q` give the same matrix.
+    ///
+    /// # Accuracy
+    ///
+    /// Each entry is within [`accuracy::MATRIX_ENTRY_ERROR`](crate::accuracy::MATRIX_ENTRY_ERROR)
+    /// of the exact rotation matrix of `q` (`tests/differential.rs`), so
+    /// `from_quat(a * b)` and `from_quat(a) * from_quat(b)` agree within
+    /// three times that plus the product's error (`tests/properties.rs`).
+    ///
+    /// ```
+    /// use core::f32::consts::FRAC_PI_2;
+    /// use rigtform::{Cvec4, Matrix4, Quat};
+    /// let m = Matrix4::from_quat(Quat::from_rotation_z(FRAC_PI_2));
+    /// assert!((m * Cvec4::new(1.0, 0.0, 0.0, 0.0) - Cvec4::new(0.0, 1.0, 0.0, 0.0)).norm() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn from_quat(q: Quat) -> Self {
+        let Quat { w, x, y, z } = q;
+        let (x2, y2, z2) = (x + x, y + y, z + z);
+        let (xx, yy, zz) = (x * x2, y * y2, z * z2);
+        let (xy, xz, yz) = (x * y2, x * z2, y * z2);
+        let (wx, wy, wz) = (w * x2, w * y2, w * z2);
+        Self::from_cols(
+            Cvec4::new(1.0 - (yy + zz), xy + wz, xz - wy, 0.0),
+            Cvec4::new(xy - wz, 1.0 - (xx + zz), yz + wx, 0.0),
+            Cvec4::new(xz + wy, yz - wx, 1.0 - (xx + yy), 0.0),
+            Cvec4::new(0.0, 0.0, 0.0, 1.0),
+        )
+    }
+
+    /// The matrix `T R` of a rigid body transform (the notes'
+    /// `rigTFormToMatrix`), built directly: the rotation's columns, and the
+    /// translation in the last column. Same as `Matrix4::from(a)`.
+    ///
+    /// # Preconditions
+    ///
+    /// `a.r` is a unit quaternion.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+    /// let a = RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::from_rotation_x(0.4));
+    /// let p = Cvec4::from_point(Cvec3::new(-1.0, 0.5, 2.0));
+    /// assert!((Matrix4::from_rig_tform(a) * p - a * p).norm() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn from_rig_tform(a: RigTForm) -> Self {
+        let [c0, c1, c2, _] = Self::from_quat(a.r).cols;
+        Self::from_cols(c0, c1, c2, Cvec4::from_point(a.t))
+    }
+
+    /// The transpose.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix4};
+    /// let m = Matrix4::from_translation(Cvec3::new(1.0, 2.0, 3.0));
+    /// assert_eq!(m.transpose().cols[0].w, 1.0);
+    /// assert_eq!(m.transpose().transpose(), m);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn transpose(self) -> Self {
+        let [a, b, c, d] = self.cols;
+        Self::from_cols(
+            Cvec4::new(a.x, b.x, c.x, d.x),
+            Cvec4::new(a.y, b.y, c.y, d.y),
+            Cvec4::new(a.z, b.z, c.z, d.z),
+            Cvec4::new(a.w, b.w, c.w, d.w),
+        )
+    }
+
+    /// The inverse matrix, or `None` when there is none to give.
+    ///
+    /// Computed from 3-vector cross products of the columns (the
+    /// block-wise cofactor form in E. Lengyel, *Foundations of Game Engine
+    /// Development*, vol. 1, section 1.7.5), in f32.
+    ///
+    /// # Preconditions
+    ///
+    /// None. Returns `None` when the determinant is zero or not finite
+    /// (a singular matrix, or NaN/infinite entries), or when an entry of
+    /// the inverse would not be finite; every `Some` holds finite entries.
+    /// A nearly singular matrix yields a correspondingly inaccurate inverse.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix4};
+    /// let m = Matrix4::from_translation(Cvec3::X) * Matrix4::from_scale(Cvec3::new(2.0, 4.0, 8.0));
+    /// let i = m.inverse().unwrap();
+    /// assert_eq!(m * i, Matrix4::IDENTITY);
+    /// assert_eq!(Matrix4::from_scale(Cvec3::new(1.0, 0.0, 1.0)).inverse(), None);
+    /// ```
+    #[must_use]
+    pub fn inverse(self) -> Option<Self> {
+        let [ca, cb, cc, cd] = self.cols;
+        let (a, b, c, d) = (ca.xyz(), cb.xyz(), cc.xyz(), cd.xyz());
+        let (x, y, z, w) = (ca.w, cb.w, cc.w, cd.w);
+        let s = a.cross(b);
+        let t = c.cross(d);
+        let u = a * y - b * x;
+        let v = c * w - d * z;
+        let det = s.dot(v) + t.dot(u);
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        let inv_det = 1.0 / det;
+        let (s, t, u, v) = (s * inv_det, t * inv_det, u * inv_det, v * inv_det);
+        // Rows of the inverse.
+        let r0 = b.cross(v) + t * y;
+        let r1 = v.cross(a) - t * x;
+        let r2 = d.cross(u) + s * w;
+        let r3 = u.cross(c) - s * z;
+        let rows = Self::from_cols(
+            Cvec4::new(r0.x, r0.y, r0.z, -b.dot(t)),
+            Cvec4::new(r1.x, r1.y, r1.z, a.dot(t)),
+            Cvec4::new(r2.x, r2.y, r2.z, -d.dot(s)),
+            Cvec4::new(r3.x, r3.y, r3.z, c.dot(s)),
+        );
+        let inverse = rows.transpose();
+        inverse.is_finite().then_some(inverse)
+    }
+
+    /// The normal matrix: the inverse transpose of the upper 3x3 block, as
+    /// a `Matrix4` with no translation (the notes' `normalMatrix(MVM)`, the
+    /// NMVM sent to the shaders). Normals transformed by it stay
+    /// perpendicular to surfaces under non-uniform scaling; for `T R S` it
+    /// is `R S^-1`.
+    ///
+    /// # Preconditions
+    ///
+    /// None. `None` when the 3x3 block is singular (a zero scale) or not
+    /// finite, as for [`inverse`](Self::inverse).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix4};
+    /// let n = Matrix4::from_scale(Cvec3::new(2.0, 4.0, 0.5)).normal_matrix().unwrap();
+    /// assert_eq!(n, Matrix4::from_scale(Cvec3::new(0.5, 0.25, 2.0)));
+    /// ```
+    #[must_use]
+    pub fn normal_matrix(self) -> Option<Self> {
+        let [a, b, c, _] = self.cols;
+        let (a, b, c) = (a.xyz(), b.xyz(), c.xyz());
+        // The inverse of [a b c] has rows (b x c, c x a, a x b) / det,
+        // so its transpose has them as columns.
+        let (bc, ca, ab) = (b.cross(c), c.cross(a), a.cross(b));
+        let det = a.dot(bc);
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        let inv_det = 1.0 / det;
+        let n = Self::from_cols(
+            Cvec4::from_vector(bc * inv_det),
+            Cvec4::from_vector(ca * inv_det),
+            Cvec4::from_vector(ab * inv_det),
+            Cvec4::new(0.0, 0.0, 0.0, 1.0),
+        );
+        n.is_finite().then_some(n)
+    }
+
+    /// The perspective projection of `gluPerspective`: vertical field of
+    /// view `fovy` (radians), `aspect = width / height`, and the positive
+    /// distances `near` and `far` to the clipping planes. The camera looks
+    /// down -z; after the divide by w, `z = -near` maps to NDC -1 and
+    /// `z = -far` to +1.
+    ///
+    /// # Preconditions
+    ///
+    /// `0 < fovy < pi`, `aspect > 0`, `0 < near < far`, all finite. Nothing
+    /// is checked and nothing panics: outside these, entries may be
+    /// infinite or NaN (`near == far` divides by zero), and reversed or
+    /// negative distances flip the depth order.
+    ///
+    /// ```
+    /// use core::f32::consts::FRAC_PI_2;
+    /// use rigtform::{Cvec4, Matrix4};
+    /// let p = Matrix4::perspective(FRAC_PI_2, 1.0, 1.0, 10.0);
+    /// let near = p * Cvec4::new(0.0, 0.0, -1.0, 1.0);
+    /// let far = p * Cvec4::new(0.0, 0.0, -10.0, 1.0);
+    /// assert!((near.z / near.w + 1.0).abs() < 1e-6);
+    /// assert!((far.z / far.w - 1.0).abs() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn perspective(fovy: f32, aspect: f32, near: f32, far: f32) -> Self {
+        let f = 1.0 / float::tan(fovy * 0.5);
+        let depth = near - far;
+        Self::from_cols(
+            Cvec4::new(f / aspect, 0.0, 0.0, 0.0),
+            Cvec4::new(0.0, f, 0.0, 0.0),
+            Cvec4::new(0.0, 0.0, (far + near) / depth, -1.0),
+            Cvec4::new(0.0, 0.0, 2.0 * far * near / depth, 0.0),
+        )
+    }
+
+    /// `true` if every entry is finite.
+    ///
+    /// ```
+    /// assert!(rigtform::Matrix4::IDENTITY.is_finite());
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn is_finite(self) -> bool {
+        self.cols.iter().all(|c| c.is_finite())
+    }
+}
+
+impl From<RigTForm> for Matrix4 {
+    /// Same as [`Matrix4::from_rig_tform`].
+    #[inline]
+    fn from(a: RigTForm) -> Self {
+        Self::from_rig_tform(a)
+    }
+}
+
+impl Mul<Cvec4> for Matrix4 {
+    type Output = Cvec4;
+
+    /// The matrix times a column vector.
+    ///
+    /// ```
+    /// use rigtform::{Cvec4, Matrix4};
+    /// let v = Cvec4::new(1.0, 2.0, 3.0, 1.0);
+    /// assert_eq!(Matrix4::IDENTITY * v, v);
+    /// ```
+    #[inline]
+    fn mul(self, v: Cvec4) -> Cvec4 {
+        let [a, b, c, d] = self.cols;
+        a * v.x + b * v.y + c * v.z + d * v.w
+    }
+}
+
+impl Mul<Matrix4> for Matrix4 {
+    type Output = Matrix4;
+
+    /// The matrix product; `(a * b) * v == a * (b * v)`.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix4};
+    /// let t = Matrix4::from_translation(Cvec3::X);
+    /// assert_eq!(t * Matrix4::IDENTITY, t);
+    /// ```
+    #[inline]
+    fn mul(self, o: Matrix4) -> Matrix4 {
+        let [a, b, c, d] = o.cols;
+        Matrix4::from_cols(self * a, self * b, self * c, self * d)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn inverse_of_a_general_matrix_multiplies_back_to_identity() {
+        let m = Matrix4::from_cols_array(&[
+            2.0, 1.0, 0.0, 0.5, //
+            -1.0, 3.0, 1.0, 0.0, //
+            0.0, 0.5, 4.0, -1.0, //
+            1.0, 2.0, 3.0, 1.0,
+        ]);
+        let i = m.inverse().expect("invertible");
+        for (got, want) in (m * i)
+            .to_cols_array()
+            .iter()
+            .zip(Matrix4::IDENTITY.to_cols_array())
+        {
+            assert!((got - want).abs() < 1e-6, "{got} vs {want}");
+        }
+    }
+
+    #[test]
+    fn singular_and_non_finite_matrices_have_no_inverse() {
+        let mut rank3 = Matrix4::IDENTITY;
+        rank3.cols[2] = rank3.cols[0] + rank3.cols[1];
+        assert_eq!(rank3.inverse(), None);
+        assert_eq!(rank3.normal_matrix(), None);
+        let mut nan = Matrix4::IDENTITY;
+        nan.cols[1].y = f32::NAN;
+        assert_eq!(nan.inverse(), None);
+        assert_eq!(nan.normal_matrix(), None);
+        let huge = Matrix4::from_scale(Cvec3::new(f32::MAX, f32::MAX, 1.0));
+        assert_eq!(huge.inverse(), None); // det overflows
+    }
+
+    #[test]
+    fn perspective_keeps_x_and_y_scaled_by_the_field_of_view() {
+        let p = Matrix4::perspective(core::f32::consts::FRAC_PI_2, 2.0, 0.5, 100.0);
+        let c = p * Cvec4::new(1.0, 1.0, -1.0, 1.0);
+        assert!((c.x / c.w - 0.5).abs() < 1e-6 && (c.y / c.w - 1.0).abs() < 1e-6);
+    }
+}

@@ -1,0 +1,246 @@
+//! [`RigTForm`]: a rigid body transform kept as a translation and a rotation
+//! quaternion, as in the notes' "Rbt data structure", "rbt * rbt", "inv
+//! operator" and "rbt Interpolation".
+
+use core::ops::Mul;
+
+use crate::quat::Quat;
+use crate::vec::{Cvec3, Cvec4};
+
+/// A rigid body transform `A = T R`: first rotate by `r`, then translate by
+/// `t`. As a matrix, `[[r, t], [0, 1]]`.
+///
+/// # Examples
+///
+/// ```
+/// use core::f32::consts::FRAC_PI_2;
+/// use rigtform::{Cvec3, Cvec4, Quat, RigTForm};
+///
+/// let a = RigTForm::new(Cvec3::new(1.0, 0.0, 0.0), Quat::from_rotation_z(FRAC_PI_2));
+/// let p = a * Cvec4::from_point(Cvec3::X);   // rotated, then moved
+/// let v = a * Cvec4::from_vector(Cvec3::X);  // rotated only
+/// assert!((p - Cvec4::new(1.0, 1.0, 0.0, 1.0)).norm() < 1e-6);
+/// assert!((v - Cvec4::new(0.0, 1.0, 0.0, 0.0)).norm() < 1e-6);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[repr(C)]
+pub struct RigTForm {
+    /// Translation, applied after the rotation.
+    pub t: Cvec3,
+    /// Rotation, a unit quaternion.
+    pub r: Quat,
+}
+
+impl Default for RigTForm {
+    /// The identity transform.
+    fn default() -> Self {
+        Self::IDENTITY
+    }
+}
+
+impl RigTForm {
+    /// No translation, no rotation.
+    pub const IDENTITY: Self = Self::new(Cvec3::ZERO, Quat::IDENTITY);
+
+    /// The transform that rotates by `r`, then translates by `t`.
+    ///
+    /// # Preconditions
+    ///
+    /// `r` is a unit quaternion (not checked; [`Quat::normalize`] it if it
+    /// may have drifted).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let a = RigTForm::new(Cvec3::Z, Quat::IDENTITY);
+    /// assert_eq!(a, RigTForm::from_translation(Cvec3::Z));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn new(t: Cvec3, r: Quat) -> Self {
+        Self { t, r }
+    }
+
+    /// A pure translation.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Cvec4, RigTForm};
+    /// let p = RigTForm::from_translation(Cvec3::Y) * Cvec4::from_point(Cvec3::ZERO);
+    /// assert_eq!(p, Cvec4::new(0.0, 1.0, 0.0, 1.0));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_translation(t: Cvec3) -> Self {
+        Self::new(t, Quat::IDENTITY)
+    }
+
+    /// A pure rotation.
+    ///
+    /// # Preconditions
+    ///
+    /// `r` is a unit quaternion.
+    ///
+    /// ```
+    /// use rigtform::{Quat, RigTForm};
+    /// let a = RigTForm::from_rotation(Quat::from_rotation_x(0.1));
+    /// assert_eq!(a, RigTForm::from_rotation_x(0.1));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_rotation(r: Quat) -> Self {
+        Self::new(Cvec3::ZERO, r)
+    }
+
+    /// A pure rotation by `angle` radians about the x axis (the notes'
+    /// `makeXRotation`).
+    ///
+    /// ```
+    /// use rigtform::{Quat, RigTForm};
+    /// assert_eq!(RigTForm::from_rotation_x(0.5).r, Quat::from_rotation_x(0.5));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn from_rotation_x(angle: f32) -> Self {
+        Self::from_rotation(Quat::from_rotation_x(angle))
+    }
+
+    /// A pure rotation by `angle` radians about the y axis.
+    ///
+    /// ```
+    /// use rigtform::{Quat, RigTForm};
+    /// assert_eq!(RigTForm::from_rotation_y(0.5).r, Quat::from_rotation_y(0.5));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn from_rotation_y(angle: f32) -> Self {
+        Self::from_rotation(Quat::from_rotation_y(angle))
+    }
+
+    /// A pure rotation by `angle` radians about the z axis.
+    ///
+    /// ```
+    /// use rigtform::{Quat, RigTForm};
+    /// assert_eq!(RigTForm::from_rotation_z(0.5).r, Quat::from_rotation_z(0.5));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn from_rotation_z(angle: f32) -> Self {
+        Self::from_rotation(Quat::from_rotation_z(angle))
+    }
+
+    /// The inverse transform, translation `-r^-1 t` and rotation `r^-1`
+    /// (the notes' "inv operator").
+    ///
+    /// # Preconditions
+    ///
+    /// `r` is a unit quaternion. `a.inv().inv()` equals `a` up to the
+    /// rounding of two rotations of `t` ([`accuracy::ROTATE_MAX_REL_ERROR`](crate::accuracy::ROTATE_MAX_REL_ERROR)
+    /// times `|t|` each); the rotation part is exact.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let a = RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::from_rotation_y(0.3));
+    /// let i = a * a.inv();
+    /// assert!(i.t.norm() < 1e-6 && i.r.angle_to(Quat::IDENTITY) < 1e-6);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn inv(self) -> Self {
+        let r = self.r.inv();
+        Self::new(-(r * self.t), r)
+    }
+
+    /// Interpolates between two frames the notes' way: the translation by
+    /// linear interpolation (the origin moves on a straight line at constant
+    /// speed), the rotation by [`Quat::slerp`] (constant angular velocity
+    /// about one axis, the short way).
+    ///
+    /// Exactly `self` at `alpha = 0`; `other` (its rotation possibly as
+    /// `-r`) at `alpha = 1`; extrapolates outside [0, 1]. Left invariant,
+    /// `(g * a).interpolate(g * b, t) == g * a.interpolate(b, t)`, but not
+    /// right invariant: the origin plays a special role.
+    ///
+    /// # Preconditions
+    ///
+    /// Unit rotations. NaN or infinite input gives NaN components.
+    ///
+    /// # Accuracy
+    ///
+    /// Rotation as [`Quat::slerp`]; translation as [`Cvec3::lerp`].
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use core::f32::consts::PI;
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let a = RigTForm::IDENTITY;
+    /// let b = RigTForm::new(Cvec3::new(2.0, 0.0, 0.0), Quat::from_rotation_z(PI / 2.0));
+    /// let mid = a.interpolate(b, 0.5);
+    /// assert_eq!(mid.t, Cvec3::new(1.0, 0.0, 0.0));
+    /// assert!(mid.r.angle_to(Quat::from_rotation_z(PI / 4.0)) < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn interpolate(self, other: Self, alpha: f32) -> Self {
+        Self::new(self.t.lerp(other.t, alpha), self.r.slerp(other.r, alpha))
+    }
+}
+
+impl Mul<RigTForm> for RigTForm {
+    type Output = RigTForm;
+
+    /// Composition: translation `t1 + r1 t2`, rotation `r1 r2` (the notes'
+    /// "rbt * rbt"). `a * b` applies `b` first.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Cvec4, Quat, RigTForm};
+    /// let a = RigTForm::new(Cvec3::X, Quat::from_rotation_z(0.3));
+    /// let b = RigTForm::new(Cvec3::Y, Quat::from_rotation_x(0.2));
+    /// let p = Cvec4::from_point(Cvec3::new(1.0, 2.0, 3.0));
+    /// assert!(((a * b) * p - a * (b * p)).norm() < 1e-6);
+    /// ```
+    #[inline]
+    fn mul(self, o: RigTForm) -> RigTForm {
+        RigTForm::new(self.t + self.r * o.t, self.r * o.r)
+    }
+}
+
+impl Mul<Cvec4> for RigTForm {
+    type Output = Cvec4;
+
+    /// Applies the transform to homogeneous coordinates: `r c + [t, 0] c.w`.
+    /// A point (`w = 1`) is rotated and translated; a vector (`w = 0`) is
+    /// only rotated; `w` is copied.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Cvec4, RigTForm};
+    /// let a = RigTForm::from_translation(Cvec3::new(5.0, 0.0, 0.0));
+    /// assert_eq!(a * Cvec4::new(1.0, 0.0, 0.0, 0.0), Cvec4::new(1.0, 0.0, 0.0, 0.0));
+    /// assert_eq!(a * Cvec4::new(1.0, 0.0, 0.0, 1.0), Cvec4::new(6.0, 0.0, 0.0, 1.0));
+    /// ```
+    #[inline]
+    fn mul(self, c: Cvec4) -> Cvec4 {
+        self.r * c + Cvec4::from_vector(self.t) * c.w
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn inverse_of_a_pure_translation_is_exact() {
+        let a = RigTForm::from_translation(Cvec3::new(1.5, -2.0, 3.25));
+        assert_eq!(
+            a.inv(),
+            RigTForm::from_translation(Cvec3::new(-1.5, 2.0, -3.25))
+        );
+        assert_eq!(a * a.inv(), RigTForm::IDENTITY);
+    }
+
+    #[test]
+    fn interpolate_is_exact_at_zero() {
+        let a = RigTForm::new(Cvec3::new(0.1, 0.2, 0.3), Quat::from_rotation_y(0.4));
+        let b = RigTForm::new(Cvec3::new(9.0, 8.0, 7.0), Quat::from_rotation_x(2.0));
+        assert_eq!(a.interpolate(b, 0.0), a);
+    }
+}

@@ -1,0 +1,174 @@
+//! Shared test support: the edge values, the input generators and the f64
+//! reference that every test file draws on, so that no two files keep their
+//! own copy.
+#![allow(dead_code)] // each test file uses a different part
+
+use nalgebra as na;
+use proptest::prelude::*;
+use rigtform::{Cvec3, Quat, RigTForm};
+
+/// libm-style edge values: walking out from 0, +-1, subnormals, the largest
+/// finite value, infinities and NaN.
+pub const EDGE_F32: [f32; 24] = [
+    0.0,
+    -0.0,
+    1e-45, // smallest subnormal
+    -1e-45,
+    1e-40, // subnormal
+    f32::MIN_POSITIVE,
+    1e-30,
+    1e-7,
+    -1e-7,
+    0.5,
+    1.0,
+    -1.0,
+    0.999_999_9, // 1 - ulp
+    1.000_000_1, // 1 + ulp
+    2.0,
+    -3.5,
+    1e7,
+    1e30,
+    -1e30,
+    f32::MAX,
+    -f32::MAX,
+    f32::INFINITY,
+    f32::NEG_INFINITY,
+    f32::NAN,
+];
+
+/// The finite entries of [`EDGE_F32`].
+pub fn finite_edges() -> impl Iterator<Item = f32> {
+    EDGE_F32.into_iter().filter(|x| x.is_finite())
+}
+
+/// A uniformly distributed unit quaternion (rejection sampling in the 4-cube,
+/// computed in f64, rounded to f32).
+pub fn unit_quat() -> impl Strategy<Value = Quat> {
+    prop::array::uniform4(-1.0f64..1.0)
+        .prop_filter("inside the unit ball, away from 0", |v| {
+            let n2: f64 = v.iter().map(|c| c * c).sum();
+            (0.01..=1.0).contains(&n2)
+        })
+        .prop_map(|v| {
+            let n = v.iter().map(|c| c * c).sum::<f64>().sqrt();
+            Quat::new(
+                (v[0] / n) as f32,
+                (v[1] / n) as f32,
+                (v[2] / n) as f32,
+                (v[3] / n) as f32,
+            )
+        })
+}
+
+/// A vector with components in [-100, 100].
+pub fn vec3() -> impl Strategy<Value = Cvec3> {
+    prop::array::uniform3(-100.0f32..100.0).prop_map(|[x, y, z]| Cvec3::new(x, y, z))
+}
+
+/// A rigid body transform with a uniform unit rotation.
+pub fn rig_tform() -> impl Strategy<Value = RigTForm> {
+    (vec3(), unit_quat()).prop_map(|(t, r)| RigTForm::new(t, r))
+}
+
+/// Plain random draws for the differential tests, which run far more cases
+/// than proptest's default and track the largest error.
+pub struct Draws(rand::rngs::StdRng);
+
+impl Draws {
+    pub fn new(seed: u64) -> Self {
+        use rand::SeedableRng;
+        Self(rand::rngs::StdRng::seed_from_u64(seed))
+    }
+    pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        use rand::Rng;
+        self.0.random_range(lo..hi)
+    }
+    pub fn unit_quat64(&mut self) -> na::Quaternion<f64> {
+        loop {
+            let v = [(); 4].map(|_| self.uniform(-1.0, 1.0));
+            let n2: f64 = v.iter().map(|c| c * c).sum();
+            if (0.01..=1.0).contains(&n2) {
+                return na::Quaternion::new(v[0], v[1], v[2], v[3]).normalize();
+            }
+        }
+    }
+    pub fn unit_quat(&mut self) -> Quat {
+        to_f32(self.unit_quat64())
+    }
+    pub fn unit_vec64(&mut self) -> na::Vector3<f64> {
+        let q = self.unit_quat64();
+        na::Vector3::new(q.i, q.j, q.k).normalize()
+    }
+}
+
+pub fn to_f64(q: Quat) -> na::Quaternion<f64> {
+    na::Quaternion::new(q.w as f64, q.x as f64, q.y as f64, q.z as f64)
+}
+
+pub fn to_f32(q: na::Quaternion<f64>) -> Quat {
+    Quat::new(q.w as f32, q.i as f32, q.j as f32, q.k as f32)
+}
+
+pub fn vec_to_f64(v: Cvec3) -> na::Vector3<f64> {
+    na::Vector3::new(v.x as f64, v.y as f64, v.z as f64)
+}
+
+/// The angle of the rotation between two quaternions, up to sign and
+/// scale, in f64: `2 atan2(|v|, |w|)` of `b^-1 a` (accurate near 0 and pi).
+pub fn rotation_angle64(a: na::Quaternion<f64>, b: na::Quaternion<f64>) -> f64 {
+    let d = b.conjugate() * a;
+    2.0 * d.imag().norm().atan2(d.w.abs())
+}
+
+/// The angle between a computed f32 rotation and an f64 reference.
+pub fn angle_error(got: Quat, want: na::Quaternion<f64>) -> f64 {
+    rotation_angle64(to_f64(got), want)
+}
+
+/// The notes' power operator in f64: `phi = atan2(|v|, w)`,
+/// `(cos(alpha phi), sin(alpha phi) v/|v|)`; pure real negative turns about x.
+pub fn pow64(q: na::Quaternion<f64>, alpha: f64) -> na::Quaternion<f64> {
+    let v = q.imag();
+    let beta = v.norm();
+    let (axis, phi) = if beta == 0.0 {
+        (
+            na::Vector3::x(),
+            if q.w < 0.0 {
+                core::f64::consts::PI
+            } else {
+                0.0
+            },
+        )
+    } else {
+        (v / beta, beta.atan2(q.w))
+    };
+    let (s, c) = (alpha * phi).sin_cos();
+    na::Quaternion::from_parts(c, axis * s)
+}
+
+/// `pow(cn(q1 q0^-1), alpha) q0` in f64, on the normalized inputs.
+pub fn slerp64(
+    q0: na::Quaternion<f64>,
+    q1: na::Quaternion<f64>,
+    alpha: f64,
+) -> na::Quaternion<f64> {
+    let (q0, q1) = (q0.normalize(), q1.normalize());
+    let mut d = q1 * q0.conjugate();
+    if d.w < 0.0 {
+        d = -d;
+    }
+    pow64(d, alpha) * q0
+}
+
+/// Largest absolute entry difference of two column-major arrays.
+pub fn max_entry_diff(a: [f32; 16], b: [f32; 16]) -> f32 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f32::max)
+}
+
+/// A rotation `angle` radians from `q` about a random-ish axis.
+pub fn rotated_by(q: Quat, axis: Cvec3, angle: f32) -> Quat {
+    Quat::from_axis_angle(axis, angle) * q
+}

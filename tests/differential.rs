@@ -1,0 +1,265 @@
+//! Differential test against an f64 reference: nalgebra in f64 for products,
+//! rotations and rotation matrices; the notes' formulas evaluated in f64
+//! (`common::pow64`, `common::slerp64`) for the power operator and slerp.
+//!
+//! Each test draws many random inputs, tracks the largest error, prints it
+//! (`cargo test --test differential -- --nocapture`) and asserts that it
+//! stays within the constant of `rigtform::accuracy` that the docs quote.
+
+mod common;
+
+use common::{angle_error, slerp64, to_f64, Draws};
+use nalgebra as na;
+use rigtform::accuracy;
+use rigtform::{Cvec3, Matrix4, Quat};
+
+const DRAWS: usize = 100_000;
+
+/// The largest error seen, and the input that caused it.
+struct Worst {
+    name: &'static str,
+    error: f64,
+    input: String,
+}
+
+impl Worst {
+    fn new(name: &'static str) -> Self {
+        Self {
+            name,
+            error: 0.0,
+            input: String::new(),
+        }
+    }
+    fn see(&mut self, error: f64, input: impl FnOnce() -> String) {
+        assert!(!error.is_nan(), "{}: NaN error for {}", self.name, input());
+        if error > self.error {
+            self.error = error;
+            self.input = input();
+        }
+    }
+    fn check(&self, bound: f32) {
+        println!(
+            "{:<44} max {:.3e}  (bound {:.1e})",
+            self.name, self.error, bound
+        );
+        assert!(
+            self.error <= bound as f64,
+            "{}: error {:e} exceeds the documented bound {:e}, at {}",
+            self.name,
+            self.error,
+            bound,
+            self.input
+        );
+    }
+}
+
+fn norm_error(q: Quat) -> f64 {
+    (to_f64(q).norm() - 1.0).abs()
+}
+
+#[test]
+fn product_is_within_its_bounds() {
+    let mut draws = Draws::new(1);
+    let mut angle = Worst::new("a * b: angle error (rad)");
+    let mut norm = Worst::new("a * b: |norm - 1|");
+    for _ in 0..DRAWS {
+        let (a, b) = (draws.unit_quat(), draws.unit_quat());
+        let got = a * b;
+        angle.see(angle_error(got, to_f64(a) * to_f64(b)), || {
+            format!("{a:?} {b:?}")
+        });
+        norm.see(norm_error(got), || format!("{a:?} {b:?}"));
+    }
+    angle.check(accuracy::MUL_MAX_ANGLE_ERROR);
+    norm.check(accuracy::UNIT_NORM_ERROR);
+}
+
+#[test]
+fn rotation_is_within_its_bound() {
+    let mut draws = Draws::new(2);
+    let mut worst = Worst::new("q * v: error / |v|");
+    for _ in 0..DRAWS {
+        let q = draws.unit_quat();
+        let v = draws.unit_vec64() * draws.uniform(1e-3, 1e3);
+        let v = Cvec3::new(v.x as f32, v.y as f32, v.z as f32);
+        let want = na::UnitQuaternion::new_normalize(to_f64(q)) * common::vec_to_f64(v);
+        let got = common::vec_to_f64(q * v);
+        worst.see((got - want).norm() / common::vec_to_f64(v).norm(), || {
+            format!("{q:?} {v:?}")
+        });
+    }
+    worst.check(accuracy::ROTATE_MAX_REL_ERROR);
+}
+
+#[test]
+fn pow_is_within_its_bounds() {
+    let mut draws = Draws::new(3);
+    let mut angle = Worst::new("q.pow(alpha): angle error / max(1, turn)");
+    let mut norm = Worst::new("q.pow(alpha): |norm - 1|");
+    for i in 0..DRAWS {
+        let q = draws.unit_quat();
+        let alpha = match i % 8 {
+            0 => 0.0,
+            1 => 1.0,
+            2 => 0.5,
+            _ => draws.uniform(-2.0, 3.0) as f32,
+        };
+        let got = q.pow(alpha);
+        let q64 = to_f64(q).normalize();
+        let want = common::pow64(q64, alpha as f64);
+        // The documented bound is per radian turned (at least one radian):
+        // the f32 rounding of alpha phi grows with it.
+        let turned = (alpha as f64 * 2.0 * q64.imag().norm().atan2(q64.w)).abs();
+        angle.see(angle_error(got, want) / turned.max(1.0), || {
+            format!("{q:?} {alpha}")
+        });
+        norm.see(norm_error(got), || format!("{q:?} {alpha}"));
+    }
+    angle.check(accuracy::POW_MAX_ANGLE_ERROR);
+    norm.check(accuracy::UNIT_NORM_ERROR);
+}
+
+#[test]
+fn to_axis_angle_is_within_its_bound() {
+    let mut draws = Draws::new(4);
+    let mut worst = Worst::new("to_axis_angle: angle error");
+    for _ in 0..DRAWS {
+        let q = draws.unit_quat();
+        let q64 = to_f64(q);
+        let want = 2.0 * q64.imag().norm().atan2(q64.w.abs());
+        let (axis, angle) = q.to_axis_angle();
+        let axis_err = (common::vec_to_f64(axis) - q64.imag().normalize() * q64.w.signum()).norm();
+        worst.see(
+            (angle as f64 - want).abs().max(axis_err * want.min(1.0)),
+            || format!("{q:?}"),
+        );
+    }
+    worst.check(accuracy::POW_MAX_ANGLE_ERROR);
+}
+
+/// How the second slerp endpoint is drawn from the first.
+#[derive(Clone, Copy, Debug)]
+enum Pair {
+    Random,
+    Identical,
+    Apart(f64),
+    Antipodal,
+}
+
+fn slerp_class(pair: Pair, seed: u64) -> (Worst, Worst) {
+    let name: &'static str = match pair {
+        Pair::Random => "slerp, random pairs: angle error / max(1, turn)",
+        Pair::Identical => "slerp, identical",
+        Pair::Apart(a) if a < 1e-5 => "slerp, 1e-6 rad apart",
+        Pair::Apart(a) if a < 1e-2 => "slerp, 1e-3 rad apart",
+        Pair::Apart(_) => "slerp, pi - 1e-4 rad apart",
+        Pair::Antipodal => "slerp, antipodal (q, -q)",
+    };
+    let mut draws = Draws::new(seed);
+    let mut worst = Worst::new(name);
+    let mut norm = Worst::new("  ... |norm - 1|");
+    for _ in 0..DRAWS / 4 {
+        let a64 = draws.unit_quat64();
+        let b64 = match pair {
+            Pair::Random => draws.unit_quat64(),
+            Pair::Identical => a64,
+            Pair::Antipodal => -a64,
+            Pair::Apart(angle) => {
+                let axis = na::Unit::new_normalize(draws.unit_vec64());
+                *na::UnitQuaternion::from_axis_angle(&axis, angle).as_ref() * a64
+            }
+        };
+        let (a, b) = (common::to_f32(a64), common::to_f32(b64));
+        let alpha = draws.uniform(-1.0, 2.0) as f32;
+        let got = a.slerp(b, alpha);
+        let want = slerp64(to_f64(a), to_f64(b), alpha as f64);
+        assert!(got.is_finite(), "{name}: {a:?} {b:?} {alpha}");
+        let turned = alpha.abs() as f64 * common::rotation_angle64(to_f64(a), to_f64(b));
+        worst.see(angle_error(got, want) / turned.max(1.0), || {
+            format!("{a:?} {b:?} {alpha}")
+        });
+        norm.see(norm_error(got), || format!("{a:?} {b:?} {alpha}"));
+    }
+    (worst, norm)
+}
+
+#[test]
+fn slerp_is_within_its_bound_on_every_edge_class() {
+    let classes = [
+        Pair::Random,
+        Pair::Identical,
+        Pair::Apart(1e-6),
+        Pair::Apart(1e-3),
+        Pair::Apart(core::f64::consts::PI - 1e-4),
+        Pair::Antipodal,
+    ];
+    for (seed, pair) in classes.into_iter().enumerate() {
+        let (angle, norm) = slerp_class(pair, 10 + seed as u64);
+        angle.check(accuracy::SLERP_MAX_ANGLE_ERROR);
+        norm.check(accuracy::UNIT_NORM_ERROR);
+    }
+}
+
+#[test]
+fn slerp_of_rotations_exactly_pi_apart_is_finite_unit_and_halfway_at_the_middle() {
+    // Both ways round are equally short; either is right, so compare the
+    // angle travelled rather than the rotation.
+    let mut draws = Draws::new(20);
+    let mut worst = Worst::new("slerp, pi apart: angle travelled error / turn");
+    for _ in 0..DRAWS / 4 {
+        let a = draws.unit_quat();
+        let axis = draws.unit_vec64();
+        let b = Quat::new(0.0, axis.x as f32, axis.y as f32, axis.z as f32) * a;
+        let alpha = draws.uniform(0.0, 1.0) as f32;
+        let got = a.slerp(b, alpha);
+        assert!(got.is_finite());
+        let travelled = rigtform::Quat::angle_to(a, got) as f64;
+        let exact = common::rotation_angle64(to_f64(a), to_f64(b));
+        let turned = (alpha as f64 * exact).max(1.0);
+        worst.see(
+            ((travelled - alpha as f64 * exact).abs() / turned).max(norm_error(got)),
+            || format!("{a:?} {b:?} {alpha}"),
+        );
+    }
+    worst.check(accuracy::SLERP_MAX_ANGLE_ERROR);
+}
+
+#[test]
+fn rotation_matrix_is_within_its_bound() {
+    let mut draws = Draws::new(5);
+    let mut worst = Worst::new("Matrix4::from_quat: entry error");
+    for _ in 0..DRAWS {
+        let q = draws.unit_quat();
+        let want = na::UnitQuaternion::new_normalize(to_f64(q)).to_rotation_matrix();
+        let got = Matrix4::from_quat(q).to_cols_array();
+        let mut err: f64 = 0.0;
+        for c in 0..3 {
+            for r in 0..3 {
+                err = err.max((got[4 * c + r] as f64 - want[(r, c)]).abs());
+            }
+        }
+        worst.see(err, || format!("{q:?}"));
+    }
+    worst.check(accuracy::MATRIX_ENTRY_ERROR);
+}
+
+#[test]
+fn normalize_is_within_its_bound_from_subnormal_to_huge() {
+    let mut draws = Draws::new(6);
+    let mut worst = Worst::new("normalize (1e-44 to 1e38): |norm - 1|");
+    for _ in 0..DRAWS {
+        let scale = 10f64.powf(draws.uniform(-44.0, 38.0));
+        let q = [(); 4].map(|_| (draws.uniform(-1.0, 1.0) * scale) as f32);
+        let q = Quat::new(q[0], q[1], q[2], q[3]);
+        if let Some(n) = q.try_normalize() {
+            worst.see(norm_error(n), || format!("{q:?}"));
+        } else {
+            assert_eq!(
+                q,
+                Quat::new(0.0, 0.0, 0.0, 0.0),
+                "only zero has no direction"
+            );
+        }
+    }
+    worst.check(accuracy::NORMALIZE_MAX_NORM_ERROR);
+}

@@ -1,0 +1,346 @@
+//! The identities and invariances of the notes, as proptest properties over
+//! random unit quaternions, vectors and rigid body transforms. Tolerances are
+//! the constants of `rigtform::accuracy`, times the number of rounded
+//! operations each side of an identity goes through.
+
+mod common;
+
+use common::{max_entry_diff, rig_tform, unit_quat, vec3};
+use core::f32::consts::PI;
+use proptest::prelude::*;
+use rigtform::accuracy::{
+    MATRIX_ENTRY_ERROR, MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, POW_MAX_ANGLE_ERROR,
+    ROTATE_MAX_REL_ERROR, SLERP_MAX_ANGLE_ERROR, UNIT_NORM_ERROR,
+};
+use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+
+/// The documented pow error for a turn of `alpha` times `theta` radians.
+fn pow_tol(alpha: f32, theta: f32) -> f32 {
+    POW_MAX_ANGLE_ERROR * (alpha * theta).abs().max(1.0)
+}
+
+/// The documented slerp error for a turn of `alpha` times `theta` radians.
+fn slerp_tol(alpha: f32, theta: f32) -> f32 {
+    SLERP_MAX_ANGLE_ERROR * (alpha * theta).abs().max(1.0)
+}
+
+/// The angle of a unit quaternion as the notes' power operator sees it, 2 atan2(|v|, w).
+fn quat_angle(q: Quat) -> f32 {
+    2.0 * q.vector().norm().atan2(q.w)
+}
+
+/// Distance between two translations, relative to their scale.
+fn close(a: Cvec3, b: Cvec3, rel: f32) -> bool {
+    (a - b).norm() <= rel * (1.0 + a.norm().max(b.norm()))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn product_matches_the_matrix_product(a in unit_quat(), b in unit_quat()) {
+        let lhs = Matrix4::from_quat(a * b).to_cols_array();
+        let rhs = (Matrix4::from_quat(a) * Matrix4::from_quat(b)).to_cols_array();
+        // One rounded product and three rounded matrices stand between the sides.
+        prop_assert!(max_entry_diff(lhs, rhs) <= 3.0 * MATRIX_ENTRY_ERROR + MUL_MAX_ANGLE_ERROR);
+    }
+
+    #[test]
+    fn rotation_matches_the_notes_triple_product(q in unit_quat(), c in vec3()) {
+        let pure = Quat::new(0.0, c.x, c.y, c.z);
+        let triple = q * pure * q.inv();
+        prop_assert!(close(q * c, triple.vector(), 2.0 * ROTATE_MAX_REL_ERROR));
+        prop_assert!(triple.w.abs() <= 2.0 * ROTATE_MAX_REL_ERROR * c.norm());
+    }
+
+    #[test]
+    fn rotation_of_a_cvec4_rotates_xyz_and_copies_w(q in unit_quat(), c in vec3(), w in -2.0f32..2.0) {
+        let r = q * Cvec4::new(c.x, c.y, c.z, w);
+        prop_assert_eq!(r.xyz(), q * c);
+        prop_assert_eq!(r.w, w);
+    }
+
+    #[test]
+    fn rotation_preserves_length_and_the_matrix_agrees(q in unit_quat(), c in vec3()) {
+        let r = q * c;
+        prop_assert!((r.norm() - c.norm()).abs() <= ROTATE_MAX_REL_ERROR * c.norm());
+        let m = Matrix4::from_quat(q) * Cvec4::from_vector(c);
+        prop_assert!(close(m.xyz(), r, ROTATE_MAX_REL_ERROR + 4.0 * MATRIX_ENTRY_ERROR));
+    }
+
+    #[test]
+    fn quat_times_its_inverse_is_identity(q in unit_quat()) {
+        prop_assert!((q * q.inv()).angle_to(Quat::IDENTITY) <= MUL_MAX_ANGLE_ERROR);
+        prop_assert!((q.inv() * q).angle_to(Quat::IDENTITY) <= MUL_MAX_ANGLE_ERROR);
+        prop_assert_eq!(q.inv().inv(), q);
+    }
+
+    #[test]
+    fn rigtform_times_its_inverse_is_identity(a in rig_tform()) {
+        let i = a * a.inv();
+        prop_assert!(i.t.norm() <= 2.0 * ROTATE_MAX_REL_ERROR * a.t.norm());
+        prop_assert!(i.r.angle_to(Quat::IDENTITY) <= MUL_MAX_ANGLE_ERROR);
+        let j = a.inv() * a;
+        prop_assert!(j.t.norm() <= 2.0 * ROTATE_MAX_REL_ERROR * a.t.norm());
+        let back = a.inv().inv();
+        prop_assert_eq!(back.r, a.r);
+        prop_assert!(close(back.t, a.t, 2.0 * ROTATE_MAX_REL_ERROR));
+    }
+
+    #[test]
+    fn rigtform_inverse_agrees_with_the_matrix_inverse(a in rig_tform()) {
+        let inv = Matrix4::from(a).inverse().expect("rigid motions are invertible");
+        let scale = 1.0 + a.t.norm();
+        prop_assert!(max_entry_diff(inv.to_cols_array(), Matrix4::from(a.inv()).to_cols_array())
+            <= 8.0 * MATRIX_ENTRY_ERROR * scale);
+    }
+
+    #[test]
+    fn products_of_unit_quaternions_stay_unit(a in unit_quat(), b in unit_quat(), alpha in -2.0f32..3.0) {
+        prop_assert!(((a * b).norm() - 1.0).abs() <= UNIT_NORM_ERROR);
+        prop_assert!((a.pow(alpha).norm() - 1.0).abs() <= UNIT_NORM_ERROR);
+        prop_assert!((a.slerp(b, alpha).norm() - 1.0).abs() <= UNIT_NORM_ERROR);
+        prop_assert!((a.nlerp(b, alpha).norm() - 1.0).abs() <= NORMALIZE_MAX_NORM_ERROR);
+    }
+
+    #[test]
+    fn pow_zero_is_exactly_identity(q in unit_quat()) {
+        prop_assert_eq!(q.pow(0.0), Quat::IDENTITY);
+    }
+
+    #[test]
+    fn pow_one_is_the_quaternion_itself(q in unit_quat()) {
+        let p = q.pow(1.0);
+        prop_assert!(p.angle_to(q) <= pow_tol(1.0, quat_angle(q)) + MUL_MAX_ANGLE_ERROR);
+        // Not its antipode: pow does no conditional negation.
+        prop_assert!(p.dot(q) > 0.0);
+    }
+
+    #[test]
+    fn pow_adds_exponents(q in unit_quat(), a in -2.0f32..2.0, b in -2.0f32..2.0) {
+        let lhs = q.pow(a) * q.pow(b);
+        let rhs = q.pow(a + b);
+        let theta = quat_angle(q);
+        let tol = pow_tol(a, theta) + pow_tol(b, theta) + pow_tol(a + b, theta);
+        prop_assert!(lhs.angle_to(rhs) <= tol + 2.0 * MUL_MAX_ANGLE_ERROR);
+    }
+
+    #[test]
+    fn pow_scales_the_angle_about_the_same_axis(axis in vec3(), angle in 0.01f32..3.1, alpha in 0.0f32..1.0) {
+        prop_assume!(axis.norm() > 1e-3);
+        let q = Quat::from_axis_angle(axis, angle);
+        let want = Quat::from_axis_angle(axis, alpha * angle);
+        prop_assert!(q.pow(alpha).angle_to(want) <= 2.0 * pow_tol(1.0, angle) + MUL_MAX_ANGLE_ERROR);
+    }
+
+    #[test]
+    fn slerp_hits_both_endpoints(a in unit_quat(), b in unit_quat()) {
+        prop_assert_eq!(a.slerp(b, 0.0), a);
+        prop_assert!(a.slerp(b, 1.0).angle_to(b) <= slerp_tol(1.0, a.angle_to(b)) + MUL_MAX_ANGLE_ERROR);
+    }
+
+    #[test]
+    fn slerp_takes_the_short_way(a in unit_quat(), b in unit_quat(), alpha in 0.0f32..1.0) {
+        let theta = a.angle_to(b);
+        prop_assert!(theta <= PI);
+        // The midpoint of the long way would lie (2 pi - theta) / 2 >= pi / 2 away.
+        let mid = a.slerp(b, 0.5);
+        prop_assert!((a.angle_to(mid) - theta / 2.0).abs() <= slerp_tol(0.5, theta) + 2.0 * MUL_MAX_ANGLE_ERROR);
+        // b and -b are one rotation, so they give one path.
+        prop_assert!(a.slerp(-b, alpha).angle_to(a.slerp(b, alpha)) <= 2.0 * slerp_tol(alpha, theta) + MUL_MAX_ANGLE_ERROR);
+    }
+
+    #[test]
+    fn slerp_has_constant_angular_velocity(a in unit_quat(), b in unit_quat(), s in 0.0f32..1.0, t in 0.0f32..1.0) {
+        // Every pair of points on the path is |s - t| theta apart: constant
+        // speed, and (by the triangle equality) a single great circle, so a
+        // single fixed axis.
+        let theta = a.angle_to(b);
+        let gap = a.slerp(b, s).angle_to(a.slerp(b, t));
+        let tol = slerp_tol(s, theta) + slerp_tol(t, theta) + 3.0 * MUL_MAX_ANGLE_ERROR;
+        prop_assert!((gap - (s - t).abs() * theta).abs() <= tol);
+    }
+
+    #[test]
+    fn slerp_extrapolates_along_the_same_path(a in unit_quat(), b in unit_quat(), alpha in -1.0f32..2.0) {
+        // Reversing the endpoints walks the same path backwards, also outside [0, 1].
+        let forward = a.slerp(b, alpha);
+        let backward = b.slerp(a, 1.0 - alpha);
+        let theta = a.angle_to(b);
+        let tol = slerp_tol(alpha, theta) + slerp_tol(1.0 - alpha, theta) + MUL_MAX_ANGLE_ERROR;
+        prop_assert!(forward.angle_to(backward) <= tol);
+        // Beyond b, the angle from a keeps growing as alpha theta (while that is at most pi).
+        let beyond = 1.0 + alpha.abs() / 2.0;
+        if beyond * theta <= PI {
+            let got = a.angle_to(a.slerp(b, beyond));
+            prop_assert!((got - beyond * theta).abs() <= slerp_tol(beyond, theta) + 3.0 * MUL_MAX_ANGLE_ERROR);
+        }
+    }
+
+    #[test]
+    fn slerp_is_left_invariant(g in unit_quat(), a in unit_quat(), b in unit_quat(), alpha in -1.0f32..2.0) {
+        let moved_then_slerped = (g * a).slerp(g * b, alpha);
+        let slerped_then_moved = g * a.slerp(b, alpha);
+        let tol = 2.0 * slerp_tol(alpha, a.angle_to(b)) + 4.0 * MUL_MAX_ANGLE_ERROR;
+        prop_assert!(moved_then_slerped.angle_to(slerped_then_moved) <= tol);
+    }
+
+    #[test]
+    fn slerp_agrees_with_nalgebra_in_f64(a in unit_quat(), b in unit_quat(), alpha in 0.0f32..1.0) {
+        use nalgebra::{Unit, UnitQuaternion};
+        let na_a = UnitQuaternion::new_normalize(common::to_f64(a));
+        let mut na_b = Unit::into_inner(UnitQuaternion::new_normalize(common::to_f64(b)));
+        if na_a.as_ref().dot(&na_b) < 0.0 {
+            na_b = -na_b; // nalgebra's slerp interpolates the components as given
+        }
+        let na_b = UnitQuaternion::new_normalize(na_b);
+        if let Some(want) = na_a.try_slerp(&na_b, alpha as f64, 1e-9) {
+            let tol = slerp_tol(alpha, a.angle_to(b)) + MUL_MAX_ANGLE_ERROR;
+            prop_assert!(common::angle_error(a.slerp(b, alpha), *want.as_ref()) <= tol as f64);
+        }
+    }
+
+    #[test]
+    fn nlerp_and_blend_follow_the_slerp_path(a in unit_quat(), b in unit_quat(), alpha in 0.0f32..1.0) {
+        // Same great circle as slerp, so the same rotation at each end and the midpoint.
+        prop_assert!(a.nlerp(b, 0.5).angle_to(a.slerp(b, 0.5)) <= slerp_tol(0.5, a.angle_to(b)) + 3.0 * MUL_MAX_ANGLE_ERROR);
+        prop_assert!(a.nlerp(b, 1.0).angle_to(b) <= 2.0 * MUL_MAX_ANGLE_ERROR);
+        // Two-way blend is nlerp.
+        let blended = Quat::blend(&[(a, 1.0 - alpha), (b, alpha)]);
+        prop_assert!(blended.angle_to(a.nlerp(b, alpha)) <= 2.0 * MUL_MAX_ANGLE_ERROR);
+        // Sign alignment: negating any entry changes nothing.
+        let flipped = Quat::blend(&[(-a, 1.0 - alpha), (-b, alpha)]);
+        prop_assert!(flipped.angle_to(blended) <= 2.0 * MUL_MAX_ANGLE_ERROR);
+    }
+
+    #[test]
+    fn blend_of_many_equal_weights_is_the_mean_rotation_about_one_axis(axis in vec3(), angles in prop::array::uniform5(-1.0f32..1.0)) {
+        prop_assume!(axis.norm() > 1e-3);
+        let entries = angles.map(|a| (Quat::from_axis_angle(axis, a), 1.0));
+        // About one axis, the normalized sum of (cos(a/2), sin(a/2) k) is the
+        // rotation by 2 atan2(sum sin, sum cos).
+        let (s, c) = angles.iter().fold((0.0f64, 0.0f64), |(s, c), &a| (s + (a as f64 / 2.0).sin(), c + (a as f64 / 2.0).cos()));
+        let want = Quat::from_axis_angle(axis, 2.0 * s.atan2(c) as f32);
+        prop_assert!(Quat::blend(&entries).angle_to(want) <= 4.0 * POW_MAX_ANGLE_ERROR);
+    }
+
+    #[test]
+    fn cn_is_the_same_rotation_with_nonnegative_w(q in unit_quat()) {
+        let c = q.cn();
+        prop_assert!(c.w >= 0.0);
+        prop_assert!(c == q || c == -q);
+    }
+
+    #[test]
+    fn axis_angle_round_trips_with_angle_at_most_pi(q in unit_quat()) {
+        let (axis, angle) = q.to_axis_angle();
+        prop_assert!((0.0..=PI).contains(&angle));
+        prop_assert!((axis.norm() - 1.0).abs() <= NORMALIZE_MAX_NORM_ERROR);
+        prop_assert!(Quat::from_axis_angle(axis, angle).angle_to(q) <= pow_tol(1.0, angle) + 2.0 * MUL_MAX_ANGLE_ERROR);
+    }
+
+    #[test]
+    fn angle_to_is_a_symmetric_distance(a in unit_quat(), b in unit_quat()) {
+        prop_assert!((a.angle_to(b) - b.angle_to(a)).abs() <= 2.0 * MUL_MAX_ANGLE_ERROR);
+        prop_assert!(a.angle_to(-a) <= MUL_MAX_ANGLE_ERROR);
+    }
+
+    #[test]
+    fn rigtform_interpolation_is_left_invariant(g in rig_tform(), a in rig_tform(), b in rig_tform(), alpha in -1.0f32..2.0) {
+        let lhs = (g * a).interpolate(g * b, alpha);
+        let rhs = g * a.interpolate(b, alpha);
+        prop_assert!(lhs.r.angle_to(rhs.r) <= 2.0 * slerp_tol(alpha, a.r.angle_to(b.r)) + 4.0 * MUL_MAX_ANGLE_ERROR);
+        let scale = 1.0 + g.t.norm() + 3.0 * (a.t.norm() + b.t.norm());
+        prop_assert!((lhs.t - rhs.t).norm() <= 8.0 * ROTATE_MAX_REL_ERROR * scale);
+    }
+
+    #[test]
+    fn rigtform_interpolation_moves_the_origin_on_a_straight_line_at_constant_speed(a in rig_tform(), b in rig_tform(), alpha in 0.0f32..1.0) {
+        let p = a.interpolate(b, alpha).t;
+        prop_assert!(close(p, a.t + (b.t - a.t) * alpha, 1e-5));
+    }
+
+    #[test]
+    fn rigtform_leaves_vectors_untranslated_and_translates_points(a in rig_tform(), c in vec3()) {
+        let v = a * Cvec4::from_vector(c);
+        prop_assert_eq!(v.w, 0.0);
+        prop_assert_eq!(v.xyz(), a.r * c);
+        let p = a * Cvec4::from_point(c);
+        prop_assert_eq!(p.w, 1.0);
+        prop_assert_eq!(p.xyz(), a.r * c + a.t);
+    }
+
+    #[test]
+    fn rigtform_product_composes_actions(a in rig_tform(), b in rig_tform(), c in vec3()) {
+        let p = Cvec4::from_point(c);
+        let scale = 1.0 + a.t.norm() + b.t.norm() + c.norm();
+        prop_assert!(((a * b) * p - a * (b * p)).norm() <= 6.0 * ROTATE_MAX_REL_ERROR * scale);
+        let lhs = Matrix4::from(a * b).to_cols_array();
+        let rhs = (Matrix4::from(a) * Matrix4::from(b)).to_cols_array();
+        prop_assert!(max_entry_diff(lhs, rhs) <= 4.0 * MATRIX_ENTRY_ERROR * scale);
+    }
+
+    #[test]
+    fn matrix_of_a_rigtform_transforms_like_the_rigtform(a in rig_tform(), c in vec3(), w in prop::sample::select(vec![0.0f32, 1.0])) {
+        let p = Cvec4::new(c.x, c.y, c.z, w);
+        let scale = 1.0 + a.t.norm() + c.norm();
+        prop_assert!((Matrix4::from(a) * p - a * p).norm() <= 8.0 * MATRIX_ENTRY_ERROR * scale);
+    }
+
+    #[test]
+    fn normal_matrix_of_trs_is_r_times_inverse_s(a in rig_tform(), s in prop::array::uniform3(0.1f32..10.0)) {
+        let s = Cvec3::new(s[0], s[1], s[2]);
+        let trs = Matrix4::from(a) * Matrix4::from_scale(s);
+        let n = trs.normal_matrix().expect("non-zero scale");
+        let want = Matrix4::from_quat(a.r) * Matrix4::from_scale(Cvec3::new(1.0 / s.x, 1.0 / s.y, 1.0 / s.z));
+        prop_assert!(max_entry_diff(n.to_cols_array(), want.to_cols_array()) <= 40.0 * MATRIX_ENTRY_ERROR);
+    }
+
+    #[test]
+    fn matrix_inverse_multiplies_back_to_identity(a in rig_tform(), s in prop::array::uniform3(0.1f32..10.0)) {
+        let m = Matrix4::from(a) * Matrix4::from_scale(Cvec3::new(s[0], s[1], s[2]));
+        let i = m.inverse().expect("non-zero scale");
+        let scale = 1.0 + a.t.norm();
+        prop_assert!(max_entry_diff((m * i).to_cols_array(), Matrix4::IDENTITY.to_cols_array())
+            <= 100.0 * MATRIX_ENTRY_ERROR * scale);
+    }
+
+    #[test]
+    fn transpose_is_an_involution_that_swaps_entries(m in prop::array::uniform16(-10.0f32..10.0)) {
+        let a = Matrix4::from_cols_array(&m);
+        prop_assert_eq!(a.transpose().transpose(), a);
+        prop_assert_eq!(a.transpose().to_cols_array()[1], m[4]);
+    }
+}
+
+#[test]
+fn rigtform_interpolation_is_not_right_invariant() {
+    // The notes' figure: the same motion, described with object frames whose
+    // origins differ, interpolates differently, because the origin travels on
+    // a straight line.
+    let a = RigTForm::IDENTITY;
+    let b = RigTForm::from_rotation_z(PI / 2.0);
+    let h = RigTForm::from_translation(Cvec3::X); // another object origin
+    let with_h = (a * h).interpolate(b * h, 0.5);
+    let then_h = a.interpolate(b, 0.5) * h;
+    // Straight line from (1, 0, 0) to (0, 1, 0) passes through (0.5, 0.5, 0) ...
+    assert!((with_h.t - Cvec3::new(0.5, 0.5, 0.0)).norm() < 1e-6);
+    // ... while the interpolated rotation carries the offset on a circle.
+    let h = core::f32::consts::FRAC_1_SQRT_2;
+    assert!((then_h.t - Cvec3::new(h, h, 0.0)).norm() < 1e-6);
+    assert!((with_h.t - then_h.t).norm() > 0.29);
+    // The rotations agree: only the translation breaks right invariance.
+    assert!(with_h.r.angle_to(then_h.r) < 1e-6);
+}
+
+#[test]
+fn perspective_maps_near_to_minus_one_and_far_to_plus_one() {
+    for (near, far) in [(0.1f32, 100.0f32), (1.0, 2.0), (0.01, 1e4)] {
+        let p = Matrix4::perspective(1.0, 1.5, near, far);
+        let n = p * Cvec4::new(0.3, -0.2, -near, 1.0);
+        let f = p * Cvec4::new(0.3, -0.2, -far, 1.0);
+        assert!((n.z / n.w + 1.0).abs() < 1e-5, "{near} {far}: {n:?}");
+        assert!((f.z / f.w - 1.0).abs() < 1e-5, "{near} {far}: {f:?}");
+        assert_eq!((n.w, f.w), (near, far));
+    }
+}
