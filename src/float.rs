@@ -8,77 +8,109 @@
 //!   msun). Its f32 kernels evaluate in f64 internally and are accurate to
 //!   within one ulp; the sweep tests at the bottom of this file measure each
 //!   one against `std`'s f64 functions.
-//! - `fast-math`: [`micromath`]'s approximations, smaller and faster, with
-//!   the much larger errors the sweep tests measure for them (see
-//!   [`crate::accuracy`]).
+//! - `fast-math`: [`micromath`]'s approximations of atan2, sin, cos and tan,
+//!   smaller and faster, with the much larger errors the sweep tests measure
+//!   for them (see [`crate::accuracy`]), guarded by libm where micromath
+//!   breaks down (zero, subnormal, huge or non-finite arguments). The square
+//!   root stays libm's (see [`sqrt`]).
 //!
 //! It also holds [`scale_for_squares`], the overflow- and underflow-free sum of
 //! squares behind every `norm` and `normalize` of the crate.
 
-/// Square root. libm: correctly rounded (0.5 ulp). fast-math: micromath's
-/// bit-level estimate plus Newton steps (relative error measured by
-/// `sweep_sqrt` below).
+/// Square root: libm's, correctly rounded (0.5 ulp), with both backends.
+///
+/// `fast-math` keeps it on purpose: micromath's `sqrt` is a single
+/// bit-level estimate with a relative error of up to 8.6 % (measured over
+/// [0, 4]; and its `sqrt(0)` is 8e-20), which would leave `normalize`
+/// nearly useless.
 #[inline]
 #[must_use]
 pub(crate) fn sqrt(x: f32) -> f32 {
-    #[cfg(not(feature = "fast-math"))]
-    {
-        libm::sqrtf(x)
-    }
-    #[cfg(feature = "fast-math")]
-    {
-        micromath::F32Ext::sqrt(x)
-    }
+    libm::sqrtf(x)
 }
 
 /// Four-quadrant arctangent of `y / x`, in [-pi, pi]. libm: within 1 ulp
 /// (FreeBSD's `e_atan2f.c` argument reduction onto `atanf`). fast-math:
-/// micromath's polynomial, absolute error about 1e-3 rad (measured by
-/// `sweep_atan2` below).
+/// micromath's rational approximation, absolute error about 3e-3 rad
+/// (measured by `sweep_atan2` below), on arguments with magnitudes within [2^-20, 2^20] (others are first divided by the
+/// larger magnitude), where its squares cannot overflow or underflow
+/// (micromath's `atan2(1e-30, 1e-30)` is NaN); libm where either argument is
+/// zero or not finite. The result gets the sign of `y`, as atan2's always
+/// has: micromath returns +pi instead of -pi for a tiny negative `y` against
+/// a negative `x`.
 #[inline]
 #[must_use]
 pub(crate) fn atan2(y: f32, x: f32) -> f32 {
-    #[cfg(not(feature = "fast-math"))]
-    {
-        libm::atan2f(y, x)
-    }
     #[cfg(feature = "fast-math")]
-    {
-        micromath::F32Ext::atan2(y, x)
+    if y.is_finite() && x.is_finite() && y != 0.0 && x != 0.0 {
+        let largest = y.abs().max(x.abs());
+        let (y, x) = if (FAST_ATAN2_LOW..=FAST_ATAN2_HIGH).contains(&largest) {
+            (y, x)
+        } else {
+            (y / largest, x / largest)
+        };
+        // The smaller argument may now be tiny beside the larger: its square
+        // then vanishes, which only rounds the angle to 0, pi/2 or pi, as it
+        // should. A quotient that underflowed to zero goes to libm.
+        if y != 0.0 && x != 0.0 {
+            return micromath::F32Ext::atan2(y, x).copysign(y);
+        }
     }
+    libm::atan2f(y, x)
 }
 
 /// Sine and cosine of `x` (radians), as `(sin, cos)`. libm: within 1 ulp for
 /// every finite `x`, with exact (Payne-Hanek) argument reduction for huge
 /// arguments. fast-math: micromath's parabola approximations, absolute error
-/// about 1e-3 (measured by `sweep_sin_cos` below).
+/// about 1e-3 (measured by `sweep_sin_cos` below), for `2^-6 <= |x| <= 2^16`;
+/// libm beyond, where micromath's own reduction returns infinities. Below
+/// 2^-6, where micromath's absolute error would swamp small rotations (its
+/// `sin(1e-5)` is 0), Taylor polynomials of degree 3 and 4 instead: error
+/// below `x^5 / 120`, 8e-12.
 #[inline]
 #[must_use]
 pub(crate) fn sin_cos(x: f32) -> (f32, f32) {
-    #[cfg(not(feature = "fast-math"))]
-    {
-        libm::sincosf(x)
-    }
     #[cfg(feature = "fast-math")]
     {
-        (micromath::F32Ext::sin(x), micromath::F32Ext::cos(x))
+        let a = x.abs();
+        if a < FAST_SIN_COS_TAYLOR {
+            let x2 = x * x;
+            return (
+                x - x * x2 * (1.0 / 6.0),
+                1.0 - x2 * 0.5 + x2 * x2 * (1.0 / 24.0),
+            );
+        }
+        if a <= FAST_SIN_COS_LIMIT {
+            return (micromath::F32Ext::sin(x), micromath::F32Ext::cos(x));
+        }
     }
+    libm::sincosf(x)
 }
 
 /// Tangent of `x` (radians). libm: within 1 ulp. fast-math: micromath's
-/// `sin / cos`.
+/// tangent (about 1 % relative error over half fields of view, measured by
+/// `sweep_tan` below) for `|x| <= 2^16`, libm beyond.
 #[inline]
 #[must_use]
 pub(crate) fn tan(x: f32) -> f32 {
-    #[cfg(not(feature = "fast-math"))]
-    {
-        libm::tanf(x)
-    }
     #[cfg(feature = "fast-math")]
-    {
-        micromath::F32Ext::tan(x)
+    if x.abs() <= FAST_SIN_COS_LIMIT {
+        return micromath::F32Ext::tan(x);
     }
+    libm::tanf(x)
 }
+
+/// 2^-6: below this, fast-math's sine and cosine are Taylor polynomials.
+#[cfg(feature = "fast-math")]
+const FAST_SIN_COS_TAYLOR: f32 = 0.015625;
+/// 2^16: beyond this, micromath's f32 range reduction loses the argument.
+#[cfg(feature = "fast-math")]
+const FAST_SIN_COS_LIMIT: f32 = 65536.0;
+/// 2^20 and 2^-20: the range in which micromath's atan2 squares its arguments safely.
+#[cfg(feature = "fast-math")]
+const FAST_ATAN2_HIGH: f32 = f32::from_bits((127 + 20) << 23);
+#[cfg(feature = "fast-math")]
+const FAST_ATAN2_LOW: f32 = f32::from_bits((127 - 20) << 23);
 
 /// 2^-100: below this, a sum of squares may have lost precision to underflow.
 /// A component whose square underflows contributes at most 2^-150 of absolute
@@ -144,8 +176,8 @@ impl ScaledSquares {
 pub(crate) fn scale_for_squares(v: [f32; 4]) -> ScaledSquares {
     let [a, b, c, d] = v;
     let sum = a * a + b * b + c * c + d * d;
-    // `!(x >= lo)` is also true for NaN: NaN goes to the slow path, which keeps it.
-    if sum >= SQUARES_UNDERFLOW && sum <= f32::MAX {
+    // NaN is not contained in any range: it goes to the slow path, which keeps it.
+    if (SQUARES_UNDERFLOW..=f32::MAX).contains(&sum) {
         return ScaledSquares { v, scale: 1.0, sum };
     }
     if sum.is_nan() {

@@ -323,14 +323,15 @@ fn rigtform_interpolation_is_not_right_invariant() {
     let h = RigTForm::from_translation(Cvec3::X); // another object origin
     let with_h = (a * h).interpolate(b * h, 0.5);
     let then_h = a.interpolate(b, 0.5) * h;
+    let tol = 1e-6 + 4.0 * rigtform::accuracy::SIN_COS_MAX_ABS_ERROR;
     // Straight line from (1, 0, 0) to (0, 1, 0) passes through (0.5, 0.5, 0) ...
-    assert!((with_h.t - Cvec3::new(0.5, 0.5, 0.0)).norm() < 1e-6);
+    assert!((with_h.t - Cvec3::new(0.5, 0.5, 0.0)).norm() <= tol);
     // ... while the interpolated rotation carries the offset on a circle.
     let h = core::f32::consts::FRAC_1_SQRT_2;
-    assert!((then_h.t - Cvec3::new(h, h, 0.0)).norm() < 1e-6);
+    assert!((then_h.t - Cvec3::new(h, h, 0.0)).norm() <= tol);
     assert!((with_h.t - then_h.t).norm() > 0.29);
     // The rotations agree: only the translation breaks right invariance.
-    assert!(with_h.r.angle_to(then_h.r) < 1e-6);
+    assert!(with_h.r.angle_to(then_h.r) <= 2.0 * slerp_tol(0.5, PI / 2.0));
 }
 
 #[test]

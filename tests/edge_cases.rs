@@ -1,0 +1,373 @@
+//! The numerics contract of DESIGN.md, item by item, on the edge values of
+//! `common::EDGE_F32` (zeros, subnormals, +-1, 1 +- ulp, 1e30, f32::MAX,
+//! infinities, NaN) and on random bit patterns.
+
+mod common;
+
+use common::{finite_edges, EDGE_F32};
+use core::f32::consts::PI;
+use rand::{Rng, SeedableRng};
+use rigtform::accuracy::{
+    MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, POW_MAX_ANGLE_ERROR, SLERP_MAX_ANGLE_ERROR,
+    UNIT_NORM_ERROR,
+};
+use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+
+/// Every quaternion whose components are all edge values: 24^4 of them.
+fn edge_quats() -> impl Iterator<Item = Quat> {
+    EDGE_F32.into_iter().flat_map(|w| {
+        EDGE_F32.into_iter().flat_map(move |x| {
+            EDGE_F32
+                .into_iter()
+                .flat_map(move |y| EDGE_F32.into_iter().map(move |z| Quat::new(w, x, y, z)))
+        })
+    })
+}
+
+/// The documented error of a power that turns by `turn` radians, plus the
+/// product inside `angle_to` that measures it.
+fn pow_bound(turn: f32) -> f32 {
+    POW_MAX_ANGLE_ERROR * turn.abs().max(1.0) + MUL_MAX_ANGLE_ERROR
+}
+
+fn is_nan_quat(q: Quat) -> bool {
+    q.w.is_nan() && q.x.is_nan() && q.y.is_nan() && q.z.is_nan()
+}
+
+fn is_unit(q: Quat, bound: f32) -> bool {
+    q.is_finite() && ((q.norm() - 1.0).abs() <= bound)
+}
+
+// Contract item 1: no function panics, for any input bits. A panic fails the
+// test; each call's result is also checked against its documented result.
+
+#[test]
+fn no_quat_function_panics_on_any_edge_combination() {
+    let alphas = [0.0, 1.0, 0.5, -1.5, f32::MAX, f32::NAN, f32::INFINITY];
+    let other = Quat::from_rotation_y(0.7);
+    let mut calls = 0u64;
+    for q in edge_quats() {
+        let finite = q.is_finite();
+        for alpha in alphas {
+            let p = q.pow(alpha);
+            if !(finite && alpha.is_finite()) {
+                assert!(is_nan_quat(p), "{q:?}^{alpha} = {p:?}");
+            }
+            let s = q.slerp(other, alpha);
+            let n = q.nlerp(other, alpha);
+            if !finite || !alpha.is_finite() {
+                assert!(
+                    !s.is_finite() && !n.is_finite(),
+                    "{q:?} {alpha}: {s:?} {n:?}"
+                );
+            }
+            calls += 3;
+        }
+        let (axis, angle) = q.to_axis_angle();
+        assert_eq!(finite, axis.is_finite() && angle.is_finite(), "{q:?}");
+        if finite {
+            assert!((0.0..=PI).contains(&angle), "{q:?}: {angle}");
+        }
+        let _ = (
+            q * other,
+            other * q,
+            q.inv(),
+            q.cn(),
+            q.dot(other),
+            q.norm(),
+        );
+        let _ = (
+            q * Cvec3::X,
+            q * Cvec4::new(1.0, 2.0, 3.0, 1.0),
+            q.normalize(),
+        );
+        let _ = (q.angle_to(other), Quat::blend(&[(q, 1.0), (other, 0.5)]));
+        let _ = Matrix4::from_quat(q).inverse();
+        calls += 12;
+    }
+    println!("{calls} calls on edge quaternions, no panic");
+}
+
+#[test]
+fn no_function_panics_on_random_bit_patterns() {
+    let mut rng = rand::rngs::StdRng::seed_from_u64(7);
+    let mut any = || f32::from_bits(rng.random());
+    for _ in 0..100_000 {
+        let q = Quat::new(any(), any(), any(), any());
+        let r = Quat::new(any(), any(), any(), any());
+        let v = Cvec3::new(any(), any(), any());
+        let alpha = any();
+        let a = RigTForm::new(v, q);
+        let b = RigTForm::new(Cvec3::new(any(), any(), any()), r);
+        let _ = (
+            q.pow(alpha),
+            q.slerp(r, alpha),
+            q.nlerp(r, alpha),
+            q.to_axis_angle(),
+        );
+        let _ = (
+            q.angle_to(r),
+            Quat::blend(&[(q, any()), (r, any())]),
+            q.normalize(),
+        );
+        let _ = (Quat::from_axis_angle(v, alpha), v.normalize(), v.norm());
+        let _ = (
+            a * b,
+            a.inv(),
+            a.interpolate(b, alpha),
+            a * Cvec4::from_point(v),
+        );
+        let m = Matrix4::from_cols_array(&core::array::from_fn(|_| any()));
+        let inv = m.inverse();
+        assert!(inv.is_none_or(|i| i.is_finite()), "{m:?}");
+        let n = m.normal_matrix();
+        assert!(n.is_none_or(|i| i.is_finite()), "{m:?}");
+        let _ = (
+            Matrix4::from(a) * m,
+            m.transpose(),
+            Matrix4::perspective(any(), any(), any(), any()),
+        );
+    }
+}
+
+// Contract item 2: pow.
+
+#[test]
+fn pow_is_finite_and_unit_for_every_finite_nonzero_edge_input() {
+    let mut checked = 0u64;
+    for q in edge_quats().filter(|q| q.is_finite()) {
+        if q == Quat::new(0.0, 0.0, 0.0, 0.0) {
+            continue;
+        }
+        for alpha in finite_edges() {
+            let p = q.pow(alpha);
+            assert!(
+                is_unit(p, UNIT_NORM_ERROR),
+                "{q:?}^{alpha} = {p:?}, norm {}",
+                p.norm()
+            );
+            checked += 1;
+        }
+    }
+    println!("pow: {checked} finite non-zero edge inputs, all unit");
+}
+
+#[test]
+fn pow_of_zero_and_of_pure_reals() {
+    for zero in [
+        Quat::new(0.0, 0.0, 0.0, 0.0),
+        Quat::new(-0.0, -0.0, 0.0, -0.0),
+    ] {
+        assert_eq!(zero.pow(0.3), Quat::IDENTITY);
+    }
+    for w in [1e-45, 1.0, 2.0, f32::MAX] {
+        assert_eq!(Quat::new(w, 0.0, 0.0, 0.0).pow(0.7), Quat::IDENTITY);
+    }
+    // w < 0 is a 2 pi turn; documented to go about the x axis.
+    for w in [-1e-45, -1.0, -f32::MAX] {
+        let p = Quat::new(w, 0.0, -0.0, 0.0).pow(0.25);
+        let want = Quat::from_rotation_x(PI / 2.0);
+        assert!(
+            p.angle_to(want) <= pow_bound(PI / 2.0) && p.dot(want) > 0.0,
+            "{w}: {p:?}"
+        );
+    }
+}
+
+#[test]
+fn pow_of_w_minus_one_exactly_and_of_tiny_and_huge_vector_parts() {
+    let cases = [
+        (Quat::new(-1.0, 0.0, 0.0, 0.0), "w = -1 exactly"),
+        (
+            Quat::new(-1.0, 1e-45, 0.0, 0.0),
+            "w = -1, subnormal vector part",
+        ),
+        (Quat::new(1.0, 1e-45, 1e-45, 0.0), "subnormal vector part"),
+        (Quat::new(1.0, 0.0, 1e-40, -1e-40), "subnormal vector part"),
+        (
+            Quat::new(0.5, 1e-20, 0.0, 0.0),
+            "vector part squared underflows",
+        ),
+        (Quat::new(1e30, 1e30, 1e30, 1e30), "1e30 components"),
+        (
+            Quat::new(f32::MAX, f32::MAX, f32::MAX, f32::MAX),
+            "f32::MAX components",
+        ),
+        (
+            Quat::new(0.0, f32::MAX, -f32::MAX, 0.0),
+            "pure vector, huge",
+        ),
+        (Quat::new(1e-45, 0.0, 0.0, 1e-45), "all subnormal"),
+    ];
+    for (q, what) in cases {
+        for alpha in [0.0, 0.5, 1.0, 2.0, -3.0] {
+            let p = q.pow(alpha);
+            assert!(is_unit(p, UNIT_NORM_ERROR), "{what}: {q:?}^{alpha} = {p:?}");
+        }
+        // The first power is the direction of q itself (not its antipode).
+        let (p, n) = (q.pow(1.0), q.normalize());
+        let turn = 2.0 * PI; // at most
+        assert!(
+            p.angle_to(n) <= pow_bound(turn) && p.dot(n) > 0.0,
+            "{what}: {p:?} vs {n:?}"
+        );
+    }
+    // Subnormal vector parts keep their direction exactly.
+    let (three, four) = (f32::from_bits(3), f32::from_bits(4)); // 3 and 4 times 2^-149
+    let p = Quat::new(1.0, 0.0, three, four).pow(1e30);
+    let axis = p.vector().normalize();
+    assert!((axis - Cvec3::new(0.0, 0.6, 0.8)).norm() < 1e-6, "{axis:?}");
+}
+
+#[test]
+fn pow_of_non_unit_quaternions_is_the_power_of_their_direction() {
+    // Scaled copies of one rotation, down to subnormal components (which
+    // round the direction: the reference is the f64 power of what was stored).
+    let q = Quat::from_axis_angle(Cvec3::new(1.0, 2.0, 3.0), 1.1);
+    for scale in [1e-40f32, 1e-20, 0.5, 3.0, 1e20, 1e38] {
+        let s = Quat::new(q.w * scale, q.x * scale, q.y * scale, q.z * scale);
+        let p = s.pow(0.4);
+        assert!(is_unit(p, UNIT_NORM_ERROR), "{scale}: {p:?}");
+        let want = common::pow64(common::to_f64(s).normalize(), 0.4);
+        assert!(
+            common::angle_error(p, want) <= pow_bound(0.4 * 1.1) as f64,
+            "{scale}: {p:?}"
+        );
+    }
+}
+
+#[test]
+fn pow_with_any_finite_alpha_is_unit() {
+    let q = Quat::from_rotation_z(2.5);
+    for alpha in [f32::MAX, -f32::MAX, 1e38, 1e30, 1e10, -7.25e7, 1e-45] {
+        assert!(is_unit(q.pow(alpha), UNIT_NORM_ERROR), "{alpha}");
+    }
+}
+
+#[test]
+fn nan_or_infinity_in_gives_nan_out() {
+    for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+        let q = Quat::new(bad, 0.0, 0.0, 0.0);
+        let r = Quat::new(1.0, 0.0, bad, 0.0);
+        let good = Quat::from_rotation_x(0.3);
+        assert!(is_nan_quat(q.pow(0.5)) && is_nan_quat(r.pow(0.5)));
+        assert!(is_nan_quat(good.pow(bad)));
+        assert!(!good.slerp(r, 0.5).is_finite() && !r.slerp(good, 0.5).is_finite());
+        assert!(!good.slerp(good, bad).is_finite());
+        assert!(is_nan_quat(q.normalize()) && q.try_normalize().is_none());
+        assert!(is_nan_quat(good.nlerp(r, 0.5)));
+        assert!(is_nan_quat(Quat::blend(&[(good, 1.0), (r, 1.0)])));
+        assert!(q.to_axis_angle().1.is_nan() && good.angle_to(r).is_nan());
+        assert!(is_nan_quat(Quat::from_axis_angle(
+            Cvec3::new(bad, 0.0, 0.0),
+            1.0
+        )));
+        assert!(is_nan_quat(Quat::from_axis_angle(Cvec3::X, bad)));
+        assert!(Cvec3::new(0.0, bad, 0.0).normalize().x.is_nan());
+        let a = RigTForm::new(Cvec3::new(bad, 0.0, 0.0), good);
+        assert!(!a.interpolate(RigTForm::IDENTITY, 0.5).t.is_finite());
+        assert_eq!(Matrix4::from(a).inverse(), None);
+    }
+}
+
+#[test]
+fn documented_results_for_degenerate_input() {
+    assert_eq!(Quat::from_axis_angle(Cvec3::ZERO, 1.0), Quat::IDENTITY);
+    assert_eq!(
+        Quat::new(0.0, 0.0, 0.0, 0.0).to_axis_angle(),
+        (Cvec3::X, 0.0)
+    );
+    assert_eq!(Quat::blend(&[]), Quat::IDENTITY);
+    assert!(is_nan_quat(Quat::new(0.0, 0.0, 0.0, 0.0).normalize()));
+    assert_eq!(
+        Matrix4::from_scale(Cvec3::new(1.0, 1.0, 0.0)).inverse(),
+        None
+    );
+    assert_eq!(
+        Matrix4::from_scale(Cvec3::new(0.0, 1.0, 1.0)).normal_matrix(),
+        None
+    );
+    // Degenerate projections give non-finite entries, never a panic.
+    assert!(!Matrix4::perspective(1.0, 1.0, 2.0, 2.0).is_finite());
+    assert!(!Matrix4::perspective(1.0, 0.0, 1.0, 2.0).is_finite());
+}
+
+// Contract item 3: slerp.
+
+#[test]
+fn slerp_of_identical_nearly_identical_antipodal_and_opposite_rotations() {
+    let bases = [
+        Quat::IDENTITY,
+        Quat::from_axis_angle(Cvec3::new(1.0, -2.0, 0.5), 2.9),
+        Quat::new(0.0, 0.0, 0.0, 1.0),
+        Quat::new(-0.5, 0.5, -0.5, 0.5),
+    ];
+    for a in bases {
+        let cases = [
+            (a, "identical"),
+            (
+                Quat::from_axis_angle(Cvec3::new(0.3, 0.4, 0.5), 1e-6) * a,
+                "1e-6 rad apart",
+            ),
+            (-a, "antipodal"),
+            (Quat::new(0.0, 0.6, 0.0, 0.8) * a, "pi apart"),
+            (-(Quat::new(0.0, 0.0, 1.0, 0.0) * a), "pi apart, negated"),
+        ];
+        for (b, what) in cases {
+            let theta = a.angle_to(b);
+            for alpha in [0.0f32, 0.25, 0.5, 0.75, 1.0, -0.5, 1.5] {
+                let s = a.slerp(b, alpha);
+                assert!(
+                    is_unit(s, UNIT_NORM_ERROR),
+                    "{what}: {a:?} {b:?} {alpha}: {s:?}"
+                );
+                if (0.0..=1.0).contains(&alpha) {
+                    // The short way: never further from a than alpha theta <= alpha pi.
+                    let travelled = a.angle_to(s);
+                    assert!(
+                        (travelled - alpha * theta).abs()
+                            <= PI * SLERP_MAX_ANGLE_ERROR + 2.0 * MUL_MAX_ANGLE_ERROR,
+                        "{what}: {alpha}: travelled {travelled}, want {}",
+                        alpha * theta
+                    );
+                }
+            }
+            assert_eq!(a.slerp(b, 0.0), a, "{what}: exact at alpha = 0");
+        }
+    }
+}
+
+#[test]
+fn slerp_of_antipodal_inputs_stays_put() {
+    let a = Quat::from_axis_angle(Cvec3::new(2.0, 1.0, -1.0), 0.8);
+    for alpha in [0.3f32, 1.0, 2.0] {
+        assert!(a.slerp(-a, alpha).angle_to(a) <= SLERP_MAX_ANGLE_ERROR + MUL_MAX_ANGLE_ERROR);
+    }
+}
+
+// Contract item 4: unit-norm preservation, and normalize for drift.
+
+#[test]
+fn long_chains_drift_slowly_and_normalize_restores_unit_norm() {
+    let step = Quat::from_axis_angle(Cvec3::new(0.2, -0.7, 0.4), 0.013);
+    let mut q = Quat::IDENTITY;
+    let mut worst = 0.0f32;
+    for _ in 0..100_000 {
+        q = q * step;
+        worst = worst.max((q.norm() - 1.0).abs());
+    }
+    println!("norm drift after 100000 chained products: {worst:.3e}");
+    // Rounding errors of each product are at most UNIT_NORM_ERROR and grow no faster than linearly.
+    assert!(worst <= 100_000.0 * UNIT_NORM_ERROR);
+    assert!((q.normalize().norm() - 1.0).abs() <= NORMALIZE_MAX_NORM_ERROR);
+}
+
+#[test]
+fn normalize_works_from_subnormal_to_max() {
+    for q in edge_quats().filter(|q| q.is_finite()) {
+        match q.try_normalize() {
+            Some(n) => assert!(is_unit(n, NORMALIZE_MAX_NORM_ERROR), "{q:?} -> {n:?}"),
+            None => assert_eq!(q, Quat::new(0.0, 0.0, 0.0, 0.0)),
+        }
+    }
+}
