@@ -93,8 +93,9 @@ pub const MATRIX_ENTRY_ERROR: f32 = 3.5e-7; // 2.683e-7
 
 #[cfg(test)]
 mod tests {
-    /// The table in the module docs quotes every constant for both backends;
-    /// this keeps the column of the backend under test equal to the code.
+    /// The tables in the module docs and in the README quote every constant
+    /// for both backends; this keeps the column of the backend under test
+    /// equal to the code.
     #[test]
     fn docs_table_matches_the_constants() {
         let column = if cfg!(feature = "fast-math") { 2 } else { 1 };
@@ -110,20 +111,19 @@ mod tests {
             ("SIN_COS_MAX_ABS_ERROR", super::SIN_COS_MAX_ABS_ERROR),
             ("TAN_MAX_REL_ERROR", super::TAN_MAX_REL_ERROR),
         ];
-        let source = include_str!("accuracy.rs");
-        for (name, value) in constants {
-            let row = source
-                .lines()
-                .find(|l| l.starts_with(&std::format!("//! | [`{name}`]")))
-                .unwrap_or_else(|| panic!("{name} is missing from the docs table"));
-            let cell: f32 = row
-                .split('|')
-                .nth(column + 1)
-                .unwrap()
-                .trim()
-                .parse()
-                .unwrap();
-            assert_eq!(cell, value, "docs table row for {name}");
+        let tables = [
+            ("src/accuracy.rs", include_str!("accuracy.rs"), "//! | [`"),
+            ("README.md", include_str!("../README.md"), "| `"),
+        ];
+        for (file, text, row_start) in tables {
+            for (name, value) in constants {
+                let row = text
+                    .lines()
+                    .find(|l| l.starts_with(&std::format!("{row_start}{name}`")))
+                    .unwrap_or_else(|| panic!("{name} is missing from the table in {file}"));
+                let cell = row.split('|').nth(column + 1).unwrap_or_default().trim();
+                assert_eq!(cell.parse(), Ok(value), "{file}: table row for {name}");
+            }
         }
     }
 }

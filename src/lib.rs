@@ -92,3 +92,8 @@ pub use matrix::Matrix4;
 pub use quat::Quat;
 pub use rigtform::RigTForm;
 pub use vec::{Cvec3, Cvec4};
+
+/// The README's Rust example, compiled and run as a doc test.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;

@@ -2,3 +2,20 @@
 
 #[cfg(feature = "mint")]
 mod impl_mint;
+
+#[cfg(all(test, feature = "defmt"))]
+mod defmt_tests {
+    use crate::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+
+    fn implements_format<T: defmt::Format>() {}
+
+    /// Fails to compile if a public type loses its `defmt::Format`.
+    #[test]
+    fn every_public_type_implements_format() {
+        implements_format::<Cvec3>();
+        implements_format::<Cvec4>();
+        implements_format::<Quat>();
+        implements_format::<RigTForm>();
+        implements_format::<Matrix4>();
+    }
+}
