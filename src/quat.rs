@@ -591,10 +591,10 @@ impl Quat {
     }
 
     /// The angle in [0, pi] radians of the rotation that takes `self` to
-    /// `other`: the angle of `other * self.inv()`, the short way. Zero if
-    /// and only if they are the same rotation (`q.angle_to(-q) == 0`). This
-    /// is the right way to compare two rotations (never component by
-    /// component).
+    /// `other`: the angle of `other * self.inv()`, the short way. Zero, up
+    /// to rounding, exactly when they are the same rotation (so
+    /// `q.angle_to(-q)` is 0). This is the right way to compare two
+    /// rotations (never component by component).
     ///
     /// # Preconditions
     ///
@@ -655,8 +655,8 @@ impl Mul<Cvec3> for Quat {
 
     /// Rotates `v`: the vector part of the notes' triple product
     /// `q [0, v] q^-1`, evaluated as `v + w t + u x t` with `u` the vector
-    /// part of `q` and `t = 2 u x v` (the same value, in 15 multiplications
-    /// instead of 32).
+    /// part of `q` and `t = 2 u x v` (the same value for a unit `q`, in 18
+    /// multiplications instead of the triple product's 32).
     ///
     /// Preconditions: `self` is a unit quaternion (for another, the result
     /// is not a rotation). Accuracy: error at most

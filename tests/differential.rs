@@ -247,10 +247,17 @@ fn rotation_matrix_is_within_its_bound() {
 fn normalize_is_within_its_bound_from_subnormal_to_huge() {
     let mut draws = Draws::new(6);
     let mut worst = Worst::new("normalize (1e-44 to 1e38): |norm - 1|");
+    let mut ulps = Worst::new("Quat::norm (1e-44 to 1e38): error in ulps");
     for _ in 0..DRAWS {
         let scale = 10f64.powf(draws.uniform(-44.0, 38.0));
         let q = [(); 4].map(|_| (draws.uniform(-1.0, 1.0) * scale) as f32);
         let q = Quat::new(q[0], q[1], q[2], q[3]);
+        let exact = to_f64(q).norm();
+        let ulp = {
+            let n = exact as f32;
+            (f32::from_bits(n.to_bits() + 1) - n) as f64
+        };
+        ulps.see((q.norm() as f64 - exact).abs() / ulp, || format!("{q:?}"));
         if let Some(n) = q.try_normalize() {
             worst.see(norm_error(n), || format!("{q:?}"));
         } else {
@@ -262,4 +269,5 @@ fn normalize_is_within_its_bound_from_subnormal_to_huge() {
         }
     }
     worst.check(accuracy::NORMALIZE_MAX_NORM_ERROR);
+    ulps.check(2.0); // the 2 ulp that Quat::norm and Cvec3::norm document
 }

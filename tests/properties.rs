@@ -96,7 +96,9 @@ proptest! {
     }
 
     #[test]
-    fn products_of_unit_quaternions_stay_unit(a in unit_quat(), b in unit_quat(), alpha in -2.0f32..3.0) {
+    fn products_of_unit_quaternions_stay_unit(a in unit_quat(), b in unit_quat(), alpha in -2.0f32..3.0, axis in vec3()) {
+        prop_assume!(axis.norm() > 0.0);
+        prop_assert!((Quat::from_axis_angle(axis, 7.0 * alpha).norm() - 1.0).abs() <= UNIT_NORM_ERROR);
         prop_assert!(((a * b).norm() - 1.0).abs() <= UNIT_NORM_ERROR);
         prop_assert!((a.pow(alpha).norm() - 1.0).abs() <= UNIT_NORM_ERROR);
         prop_assert!((a.slerp(b, alpha).norm() - 1.0).abs() <= UNIT_NORM_ERROR);
