@@ -13,7 +13,15 @@ use nalgebra as na;
 use rigtform::accuracy;
 use rigtform::{Cvec3, Matrix4, Quat};
 
-const DRAWS: usize = 100_000;
+/// Random draws per operation: 100,000 unless the environment variable
+/// `RIGTFORM_DRAWS` says otherwise (more for a deeper search, fewer for
+/// mutation testing).
+fn draw_count() -> usize {
+    std::env::var("RIGTFORM_DRAWS")
+        .ok()
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(100_000)
+}
 
 /// The largest error seen, and the input that caused it.
 struct Worst {
@@ -62,7 +70,7 @@ fn product_is_within_its_bounds() {
     let mut draws = Draws::new(1);
     let mut angle = Worst::new("a * b: angle error (rad)");
     let mut norm = Worst::new("a * b: |norm - 1|");
-    for _ in 0..DRAWS {
+    for _ in 0..draw_count() {
         let (a, b) = (draws.unit_quat(), draws.unit_quat());
         let got = a * b;
         angle.see(angle_error(got, to_f64(a) * to_f64(b)), || {
@@ -78,7 +86,7 @@ fn product_is_within_its_bounds() {
 fn rotation_is_within_its_bound() {
     let mut draws = Draws::new(2);
     let mut worst = Worst::new("q * v: error / |v|");
-    for _ in 0..DRAWS {
+    for _ in 0..draw_count() {
         let q = draws.unit_quat();
         let v = draws.unit_vec64() * draws.uniform(1e-3, 1e3);
         let v = Cvec3::new(v.x as f32, v.y as f32, v.z as f32);
@@ -96,7 +104,7 @@ fn pow_is_within_its_bounds() {
     let mut draws = Draws::new(3);
     let mut angle = Worst::new("q.pow(alpha): angle error / max(1, turn)");
     let mut norm = Worst::new("q.pow(alpha): |norm - 1|");
-    for i in 0..DRAWS {
+    for i in 0..draw_count() {
         let q = draws.unit_quat();
         let alpha = match i % 8 {
             0 => 0.0,
@@ -123,7 +131,7 @@ fn pow_is_within_its_bounds() {
 fn to_axis_angle_is_within_its_bound() {
     let mut draws = Draws::new(4);
     let mut worst = Worst::new("to_axis_angle: angle error");
-    for _ in 0..DRAWS {
+    for _ in 0..draw_count() {
         let q = draws.unit_quat();
         let q64 = to_f64(q);
         let want = 2.0 * q64.imag().norm().atan2(q64.w.abs());
@@ -158,7 +166,7 @@ fn slerp_class(pair: Pair, seed: u64) -> (Worst, Worst) {
     let mut draws = Draws::new(seed);
     let mut worst = Worst::new(name);
     let mut norm = Worst::new("  ... |norm - 1|");
-    for _ in 0..DRAWS / 4 {
+    for _ in 0..draw_count() / 4 {
         let a64 = draws.unit_quat64();
         let b64 = match pair {
             Pair::Random => draws.unit_quat64(),
@@ -206,7 +214,7 @@ fn slerp_of_rotations_exactly_pi_apart_is_finite_unit_and_halfway_at_the_middle(
     // angle travelled rather than the rotation.
     let mut draws = Draws::new(20);
     let mut worst = Worst::new("slerp, pi apart: angle travelled error / turn");
-    for _ in 0..DRAWS / 4 {
+    for _ in 0..draw_count() / 4 {
         let a = draws.unit_quat();
         let axis = draws.unit_vec64();
         let b = Quat::new(0.0, axis.x as f32, axis.y as f32, axis.z as f32) * a;
@@ -228,7 +236,7 @@ fn slerp_of_rotations_exactly_pi_apart_is_finite_unit_and_halfway_at_the_middle(
 fn rotation_matrix_is_within_its_bound() {
     let mut draws = Draws::new(5);
     let mut worst = Worst::new("Matrix4::from_quat: entry error");
-    for _ in 0..DRAWS {
+    for _ in 0..draw_count() {
         let q = draws.unit_quat();
         let want = na::UnitQuaternion::new_normalize(to_f64(q)).to_rotation_matrix();
         let got = Matrix4::from_quat(q).to_cols_array();
@@ -248,7 +256,7 @@ fn normalize_is_within_its_bound_from_subnormal_to_huge() {
     let mut draws = Draws::new(6);
     let mut worst = Worst::new("normalize (1e-44 to 1e38): |norm - 1|");
     let mut ulps = Worst::new("Quat::norm (1e-44 to 1e38): error in ulps");
-    for _ in 0..DRAWS {
+    for _ in 0..draw_count() {
         let scale = 10f64.powf(draws.uniform(-44.0, 38.0));
         let q = [(); 4].map(|_| (draws.uniform(-1.0, 1.0) * scale) as f32);
         let q = Quat::new(q[0], q[1], q[2], q[3]);
