@@ -10,10 +10,11 @@ use rigtform::{Cvec3, Cvec4, Quat, RigTForm};
 fn main() {
     // Keyframe 0: at the origin, turned 30 degrees about z.
     let k0 = RigTForm::new(Cvec3::new(0.0, 0.0, 0.0), Quat::from_rotation_z(PI / 6.0));
-    // Keyframe 1: moved, and turned 200 degrees about the tilted axis (1, 1, 0),
-    // which is 160 degrees the other way: slerp must take that short way.
-    // The rotation is stored negated (w < 0); it is the same rotation.
-    let r1 = -(Quat::from_axis_angle(Cvec3::new(1.0, 1.0, 0.0), 200f32.to_radians()) * k0.r);
+    // Keyframe 1: moved, and turned a further 200 degrees about the tilted
+    // axis (1, 1, 0). That is 160 degrees the other way round: the transition
+    // quaternion has w = cos(100 degrees) < 0, and slerp's conditional
+    // negation must take the short way.
+    let r1 = Quat::from_axis_angle(Cvec3::new(1.0, 1.0, 0.0), 200f32.to_radians()) * k0.r;
     let k1 = RigTForm::new(Cvec3::new(4.0, 2.0, -1.0), r1);
 
     let total = k0.r.angle_to(k1.r);
