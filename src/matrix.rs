@@ -221,9 +221,20 @@ impl Matrix4 {
     /// # Preconditions
     ///
     /// None. Returns `None` when the determinant is zero or not finite
-    /// (a singular matrix, or NaN/infinite entries), or when an entry of
-    /// the inverse would not be finite; every `Some` holds finite entries.
-    /// A nearly singular matrix yields a correspondingly inaccurate inverse.
+    /// (a singular matrix, NaN or infinite entries, or a determinant beyond
+    /// `f32::MAX`, about 1e38, even if the inverse itself would fit), or
+    /// when an entry of the inverse would not be finite; every `Some` holds
+    /// finite entries.
+    ///
+    /// # Accuracy
+    ///
+    /// Relative error (Frobenius norm) at most
+    /// [`accuracy::INVERSE_MAX_REL_ERROR`](crate::accuracy::INVERSE_MAX_REL_ERROR)
+    /// times the condition number `|M| |M^-1|`, so a nearly singular matrix
+    /// yields a correspondingly inaccurate inverse.
+    ///
+    /// # Examples
+    ///
     ///
     /// ```
     /// use rigtform::{Cvec3, Matrix4};
@@ -242,7 +253,9 @@ impl Matrix4 {
         let u = a * y - b * x;
         let v = c * w - d * z;
         let det = s.dot(v) + t.dot(u);
-        if det == 0.0 || !det.is_finite() {
+        // An infinite determinant would make every entry 0 below; a zero or
+        // NaN one makes them non-finite, which the last line rejects.
+        if !det.is_finite() {
             return None;
         }
         let inv_det = 1.0 / det;
@@ -286,7 +299,8 @@ impl Matrix4 {
         // so its transpose has them as columns.
         let (bc, ca, ab) = (b.cross(c), c.cross(a), a.cross(b));
         let det = a.dot(bc);
-        if det == 0.0 || !det.is_finite() {
+        // As in `inverse`: zero and NaN are caught by the last line.
+        if !det.is_finite() {
             return None;
         }
         let inv_det = 1.0 / det;
@@ -421,6 +435,11 @@ mod tests {
         assert_eq!(nan.normal_matrix(), None);
         let huge = Matrix4::from_scale(Cvec3::new(f32::MAX, f32::MAX, 1.0));
         assert_eq!(huge.inverse(), None); // det overflows
+                                          // The determinant 2^129 overflows although every cofactor is finite:
+                                          // documented as None (not the zero matrix that 1 / inf would give).
+        let big = Matrix4::from_scale(Cvec3::new(2f32.powi(43), 2f32.powi(43), 2f32.powi(43)));
+        assert_eq!(big.inverse(), None);
+        assert_eq!(big.normal_matrix(), None);
     }
 
     #[test]

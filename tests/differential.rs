@@ -279,3 +279,38 @@ fn normalize_is_within_its_bound_from_subnormal_to_huge() {
     worst.check(accuracy::NORMALIZE_MAX_NORM_ERROR);
     ulps.check(2.0); // the 2 ulp that Quat::norm and Cvec3::norm document
 }
+
+#[test]
+fn inverse_of_general_matrices_is_within_its_bound() {
+    // Random 4x4 matrices with every entry in [-1, 1] (projective ones, not
+    // only affine), against nalgebra's f64 inverse. The error is relative to
+    // the inverse's size and divided by the condition number (Frobenius), as
+    // for any inverse computed in f32.
+    let mut draws = Draws::new(7);
+    let mut worst = Worst::new("Matrix4::inverse: rel. error / condition");
+    let mut tested = 0;
+    for _ in 0..draw_count() / 4 {
+        let m: [f32; 16] = core::array::from_fn(|_| draws.uniform(-1.0, 1.0) as f32);
+        let m64 = na::Matrix4::from_column_slice(&m.map(f64::from));
+        let Some(inv64) = m64.try_inverse() else {
+            continue;
+        };
+        let cond = m64.norm() * inv64.norm();
+        if cond > 1e4 {
+            continue;
+        }
+        let got = Matrix4::from_cols_array(&m)
+            .inverse()
+            .expect("a well-conditioned matrix has an inverse");
+        let got64 = na::Matrix4::from_column_slice(&got.to_cols_array().map(f64::from));
+        worst.see((got64 - inv64).norm() / inv64.norm() / cond, || {
+            format!("{m:?}")
+        });
+        tested += 1;
+    }
+    assert!(
+        tested > draw_count() / 8,
+        "too few well-conditioned draws: {tested}"
+    );
+    worst.check(accuracy::INVERSE_MAX_REL_ERROR);
+}
