@@ -471,7 +471,9 @@ impl Quat {
     /// and normalizes (the notes' "4D lerp and renormalization" hack).
     ///
     /// Cheaper than [`slerp`](Self::slerp), with the same path but not
-    /// constant angular velocity (it is faster in the middle).
+    /// constant angular velocity (it is faster in the middle). For `alpha`
+    /// in [0, 1] the result is written on the side of `self`
+    /// (`result.dot(self) >= 0`).
     ///
     /// # Preconditions
     ///
@@ -516,7 +518,9 @@ impl Quat {
     /// useful for n-way blends; for two entries with weights `1 - t` and `t`
     /// it equals [`nlerp`](Self::nlerp).
     ///
-    /// Weights need not sum to one (the result is normalized). Mind that
+    /// The result is written on the side of the first entry (`dot >= 0`
+    /// with it) when the weights are positive. Weights need not sum to one
+    /// (the result is normalized). Mind that
     /// sign alignment to the first entry is only a good choice when all
     /// rotations lie within a quarter turn (pi/2) of it.
     ///
@@ -728,6 +732,45 @@ mod tests {
         assert_eq!(j * k, i);
         assert_eq!(k * i, j);
         assert_eq!(i * i, Quat::new(-1.0, 0.0, 0.0, 0.0));
+    }
+
+    #[test]
+    fn rotations_about_the_axes_follow_the_right_hand_rule() {
+        let quarter = core::f32::consts::FRAC_PI_2;
+        let cases = [
+            (Quat::from_rotation_x(quarter), Cvec3::X, Cvec3::Y, Cvec3::Z),
+            (Quat::from_rotation_y(quarter), Cvec3::Y, Cvec3::Z, Cvec3::X),
+            (Quat::from_rotation_z(quarter), Cvec3::Z, Cvec3::X, Cvec3::Y),
+        ];
+        for (q, axis, from, to) in cases {
+            assert!((q * from - to).norm() < 1e-6, "{q:?}");
+            assert!((q * axis - axis).norm() < 1e-6, "{q:?}");
+            for angle in [-2.5f32, 0.3, 3.0] {
+                let about = Quat::from_axis_angle(axis, angle);
+                let named = match axis {
+                    Cvec3::X => Quat::from_rotation_x(angle),
+                    Cvec3::Y => Quat::from_rotation_y(angle),
+                    _ => Quat::from_rotation_z(angle),
+                };
+                assert_eq!(named, about);
+            }
+        }
+    }
+
+    #[test]
+    fn norm_squared_is_the_sum_of_the_four_squares() {
+        assert_eq!(Quat::new(1.0, -2.0, 3.0, 0.5).norm_squared(), 14.25);
+        assert_eq!(Quat::new(0.0, 3.0, 0.0, 4.0).norm(), 5.0);
+    }
+
+    #[test]
+    fn blend_and_nlerp_answer_on_the_side_of_their_first_input() {
+        let a = Quat::from_rotation_x(0.4);
+        let b = -Quat::from_rotation_y(0.9); // w < 0, the far side of a
+        assert!(Quat::blend(&[(a, 1.0), (b, 1.0)]).dot(a) > 0.0);
+        assert!(Quat::blend(&[(b, 1.0), (a, 3.0)]).dot(b) > 0.0);
+        assert!(a.nlerp(b, 0.9).dot(a) > 0.0);
+        assert!(b.nlerp(a, 0.9).dot(b) > 0.0);
     }
 
     #[test]

@@ -238,6 +238,19 @@ mod tests {
     }
 
     #[test]
+    fn named_rotations_are_pure_rotations_about_their_axis() {
+        let cases = [
+            (RigTForm::from_rotation_x(0.7), Quat::from_rotation_x(0.7)),
+            (RigTForm::from_rotation_y(0.7), Quat::from_rotation_y(0.7)),
+            (RigTForm::from_rotation_z(0.7), Quat::from_rotation_z(0.7)),
+        ];
+        for (a, r) in cases {
+            assert_eq!(a, RigTForm::new(Cvec3::ZERO, r));
+        }
+        assert_eq!(RigTForm::default(), RigTForm::IDENTITY);
+    }
+
+    #[test]
     fn interpolate_is_exact_at_zero() {
         let a = RigTForm::new(Cvec3::new(0.1, 0.2, 0.3), Quat::from_rotation_y(0.4));
         let b = RigTForm::new(Cvec3::new(9.0, 8.0, 7.0), Quat::from_rotation_x(2.0));

@@ -492,6 +492,15 @@ mod tests {
     }
 
     #[test]
+    fn arrays_hold_the_coordinates_in_order() {
+        assert_eq!(Cvec3::new(1.0, 2.0, 3.0).to_array(), [1.0, 2.0, 3.0]);
+        let v = Cvec4::new(1.0, 2.0, 3.0, 4.0);
+        assert_eq!(Cvec4::from_array(v.to_array()), v);
+        assert_eq!(v.norm_squared(), 30.0);
+        assert_eq!(Cvec3::new(2.0, 3.0, 6.0).norm_squared(), 49.0);
+    }
+
+    #[test]
     fn lerp_is_exact_at_both_ends() {
         let a = Cvec3::new(0.1, 0.2, 0.3);
         let b = Cvec3::new(-7.0, 1e-3, 5.0);

@@ -337,6 +337,30 @@ fn rigtform_interpolation_is_not_right_invariant() {
 }
 
 #[test]
+fn perspective_maps_the_edges_of_the_field_of_view_to_the_ndc_square() {
+    // A point on the top edge of the view frustum, at any depth, lands on
+    // y = 1 after the divide; on the right edge (the aspect ratio wider), x = 1.
+    for (fovy, aspect) in [(0.4f32, 1.0f32), (1.2, 16.0 / 9.0), (2.5, 0.5)] {
+        let p = Matrix4::perspective(fovy, aspect, 0.1, 100.0);
+        let half = (fovy as f64 / 2.0).tan() as f32;
+        for depth in [0.5f32, 3.0, 50.0] {
+            let top = p * Cvec4::new(0.0, half * depth, -depth, 1.0);
+            let right = p * Cvec4::new(aspect * half * depth, 0.0, -depth, 1.0);
+            let tol = 4.0 * rigtform::accuracy::TAN_MAX_REL_ERROR + 1e-6;
+            assert!(
+                (top.y / top.w - 1.0).abs() <= tol,
+                "{fovy} {aspect} {depth}: {top:?}"
+            );
+            assert!(
+                (right.x / right.w - 1.0).abs() <= tol,
+                "{fovy} {aspect}: {right:?}"
+            );
+            assert_eq!(top.w, depth);
+        }
+    }
+}
+
+#[test]
 fn perspective_maps_near_to_minus_one_and_far_to_plus_one() {
     for (near, far) in [(0.1f32, 100.0f32), (1.0, 2.0), (0.01, 1e4)] {
         let p = Matrix4::perspective(1.0, 1.5, near, far);
