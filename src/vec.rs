@@ -501,6 +501,23 @@ mod tests {
     }
 
     #[test]
+    fn cvec4_products_norms_and_lerp_use_all_four_coordinates() {
+        let a = Cvec4::new(1.0, 2.0, 3.0, 4.0);
+        let b = Cvec4::new(-2.0, 0.5, 4.0, -1.5);
+        assert_eq!(a.dot(b), -2.0 + 1.0 + 12.0 - 6.0);
+        assert_eq!(Cvec4::new(1.0, 1.0, 1.0, 1.0).norm(), 2.0);
+        assert_eq!(Cvec4::new(0.0, 0.0, 0.0, 5.0).norm(), 5.0);
+        assert_eq!(
+            Cvec4::new(0.0, 0.0, 3.0, 4.0).try_normalize(),
+            Some(Cvec4::new(0.0, 0.0, 0.6, 0.8))
+        );
+        assert_eq!(a.lerp(b, 0.0), a);
+        assert_eq!(a.lerp(b, 1.0), b);
+        assert_eq!(a.lerp(b, 0.5), Cvec4::new(-0.5, 1.25, 3.5, 1.25));
+        assert_eq!(a.lerp(b, -1.0), Cvec4::new(4.0, 3.5, 2.0, 9.5));
+    }
+
+    #[test]
     fn lerp_is_exact_at_both_ends() {
         let a = Cvec3::new(0.1, 0.2, 0.3);
         let b = Cvec3::new(-7.0, 1e-3, 5.0);
