@@ -117,12 +117,10 @@ const FAST_ATAN2_LOW: f32 = f32::from_bits((127 - 20) << 23);
 /// error, so above this threshold the relative error it causes is at most
 /// 2^-50, far below one ulp (2^-24).
 const SQUARES_UNDERFLOW: f32 = f32::from_bits((127 - 100) << 23);
-/// 2^-60: components below this are scaled up by 2^100, the others by 2^40.
-const TINY: f32 = f32::from_bits((127 - 60) << 23);
-/// 2^100, exact scale for the smallest inputs (2^-149 becomes 2^-49).
-const SCALE_UP_TINY: f32 = f32::from_bits((127 + 100) << 23);
-/// 2^40, exact scale for small inputs in [2^-60, 2^-50).
-const SCALE_UP_SMALL: f32 = f32::from_bits((127 + 40) << 23);
+/// 2^100, exact scale for small inputs: when the sum of squares is below
+/// 2^-100, every component is below 2^-50 and becomes less than 2^50, while
+/// the smallest subnormal (2^-149) becomes 2^-49, whose square is normal.
+const SCALE_UP_SMALL: f32 = f32::from_bits((127 + 100) << 23);
 /// 2^-66, exact scale for huge inputs: f32::MAX (< 2^128) becomes < 2^62,
 /// whose square, times four, stays below 2^126.
 const SCALE_DOWN_HUGE: f32 = f32::from_bits((127 - 66) << 23);
@@ -168,30 +166,24 @@ impl ScaledSquares {
 ///
 /// In the common case (the sum of squares lies in [2^-100, f32::MAX]) this is
 /// four multiplications and three additions with `scale == 1`. Otherwise the
-/// components are multiplied by a power of two chosen from the largest one,
-/// so that subnormal vectors (down to 2^-149) and vectors with components up
-/// to `f32::MAX` keep full precision. Error of the resulting norm: at most
+/// components are multiplied by 2^100 (the sum underflowed) or 2^-66 (it
+/// overflowed) and squared again, so that subnormal vectors (down to 2^-149)
+/// and vectors with components up to `f32::MAX` keep full precision. Error of the resulting norm: at most
 /// about 2 ulp from the four rounded squares and sums, plus the square root's.
 #[must_use]
 pub(crate) fn scale_for_squares(v: [f32; 4]) -> ScaledSquares {
     let [a, b, c, d] = v;
     let sum = a * a + b * b + c * c + d * d;
     // NaN is not contained in any range: it goes to the slow path, which keeps it.
-    if (SQUARES_UNDERFLOW..=f32::MAX).contains(&sum) {
+    // NaN is in no range: it is returned as it is, with the sum NaN.
+    if (SQUARES_UNDERFLOW..=f32::MAX).contains(&sum) || sum.is_nan() {
         return ScaledSquares { v, scale: 1.0, sum };
     }
-    if sum.is_nan() {
-        return ScaledSquares { v, scale: 1.0, sum };
-    }
-    let largest = a.abs().max(b.abs()).max(c.abs()).max(d.abs());
-    if largest == 0.0 || largest == f32::INFINITY {
-        // All zero (the sum is exactly 0), or an infinite component (the sum is +inf).
-        return ScaledSquares { v, scale: 1.0, sum };
-    }
-    let scale = if sum > f32::MAX {
+    // The sum overflowed (some component is at least 2^63, or infinite) or may
+    // have lost precision to underflow (every component is below 2^-50). Zero
+    // and infinite components survive the scaling unchanged.
+    let scale = if sum.is_infinite() {
         SCALE_DOWN_HUGE
-    } else if largest < TINY {
-        SCALE_UP_TINY
     } else {
         SCALE_UP_SMALL
     };
