@@ -254,6 +254,49 @@ mod tests {
     }
 
     #[test]
+    fn sin_cos_is_relatively_accurate_near_zero() {
+        // Small rotations need relative, not absolute, accuracy: within an
+        // ulp of x for the sine, of 1 for the cosine, inside (-2^-6, 2^-6).
+        for x in spread(-0.01562, 0.01562, 20_000).chain([1e-5, -3e-30, 1e-45]) {
+            let (s, c) = sin_cos(x);
+            let x64 = x as f64;
+            assert!(
+                (s as f64 - x64.sin()).abs() <= x64.abs() * 1.2e-7,
+                "sin {x}: {s}"
+            );
+            assert!((c as f64 - x64.cos()).abs() <= 1.2e-7, "cos {x}: {c}");
+        }
+    }
+
+    #[test]
+    fn atan2_of_edge_arguments() {
+        use core::f32::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+        let cases = [
+            (0.0, 1.0, 0.0),
+            (0.0, -1.0, PI),
+            (-0.0, -1.0, -PI),
+            (-1e-30, -1.0, -PI),
+            (1.0, 0.0, FRAC_PI_2),
+            (1e-30, 1e-30, FRAC_PI_4),
+            (-1e-40, 1e-40, -FRAC_PI_4),
+            (3e38, 3e38, FRAC_PI_4),
+            (1e-45, 1e30, 0.0),
+            (1e30, -1e-45, FRAC_PI_2),
+            (f32::INFINITY, 1.0, FRAC_PI_2),
+            (1.0, f32::NEG_INFINITY, PI),
+            (0.0, 0.0, 0.0),
+        ];
+        for (y, x, want) in cases {
+            let got = atan2(y, x);
+            assert!(
+                (got - want).abs() <= accuracy::ATAN2_MAX_ABS_ERROR,
+                "atan2({y}, {x}) = {got}"
+            );
+        }
+        assert!(atan2(f32::NAN, 1.0).is_nan() && atan2(1.0, f32::NAN).is_nan());
+    }
+
+    #[test]
     fn sin_cos_of_huge_arguments_stays_in_range() {
         for x in [1e10_f32, -3e20, 1e38, f32::MAX, -f32::MAX] {
             let (s, c) = sin_cos(x);
