@@ -23,7 +23,7 @@ use crate::vec::{Cvec3, Cvec4};
 /// let v = q * Cvec3::X; // x turns into y
 /// assert!((v - Cvec3::Y).norm() < 1e-6);
 ///
-/// // Halfway from the identity to q is a quarter turn's half.
+/// // Halfway from the identity to a quarter turn is an eighth of a turn.
 /// let half = Quat::IDENTITY.slerp(q, 0.5);
 /// assert!((half.angle_to(Quat::from_rotation_z(FRAC_PI_2 / 2.0))) < 1e-6);
 /// ```
