@@ -294,6 +294,24 @@ mod tests {
         assert!(atan2(f32::NAN, 1.0).is_nan() && atan2(1.0, f32::NAN).is_nan());
     }
 
+    /// The feature does what it says: inside their ranges the kernels are
+    /// micromath's, bit for bit (the accuracy sweeps alone would also pass
+    /// if everything had quietly fallen back to libm).
+    #[cfg(feature = "fast-math")]
+    #[test]
+    fn fast_math_kernels_are_micromaths_inside_their_ranges() {
+        use micromath::F32Ext;
+        for (y, x) in [(0.5f32, 0.7f32), (-3.0, 2.0), (1e5, -3e5), (-1e-3, -2e-3)] {
+            assert_eq!(atan2(y, x), F32Ext::atan2(y, x), "atan2({y}, {x})");
+        }
+        for x in [0.5f32, -2.0, 1000.0, -60000.0] {
+            assert_eq!(sin_cos(x), (F32Ext::sin(x), F32Ext::cos(x)), "sin_cos({x})");
+        }
+        for x in [0.3f32, 1.2] {
+            assert_eq!(tan(x), F32Ext::tan(x), "tan({x})");
+        }
+    }
+
     #[test]
     fn sin_cos_of_huge_arguments_stays_in_range() {
         for x in [1e10_f32, -3e20, 1e38, f32::MAX, -f32::MAX] {
