@@ -207,8 +207,11 @@ proptest! {
         // Same great circle as slerp, so the same rotation at each end and the midpoint.
         prop_assert!(a.nlerp(b, 0.5).angle_to(a.slerp(b, 0.5)) <= slerp_tol(0.5, a.angle_to(b)) + 3.0 * MUL_MAX_ANGLE_ERROR);
         prop_assert!(a.nlerp(b, 1.0).angle_to(b) <= 2.0 * MUL_MAX_ANGLE_ERROR);
+        // Written on the side of the first input.
+        prop_assert!(a.nlerp(b, alpha).dot(a) >= 0.0);
         // Two-way blend is nlerp.
         let blended = Quat::blend(&[(a, 1.0 - alpha), (b, alpha)]);
+        prop_assert!(blended.dot(a) >= 0.0);
         prop_assert!(blended.angle_to(a.nlerp(b, alpha)) <= 2.0 * MUL_MAX_ANGLE_ERROR);
         // Sign alignment: negating any entry changes nothing.
         let flipped = Quat::blend(&[(-a, 1.0 - alpha), (-b, alpha)]);

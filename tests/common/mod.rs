@@ -167,8 +167,3 @@ pub fn max_entry_diff(a: [f32; 16], b: [f32; 16]) -> f32 {
         .map(|(x, y)| (x - y).abs())
         .fold(0.0, f32::max)
 }
-
-/// A rotation `angle` radians from `q` about a random-ish axis.
-pub fn rotated_by(q: Quat, axis: Cvec3, angle: f32) -> Quat {
-    Quat::from_axis_angle(axis, angle) * q
-}
