@@ -224,6 +224,8 @@ impl Cvec3 {
 impl Cvec4 {
     /// The zero vector.
     pub const ZERO: Self = Self::new(0.0, 0.0, 0.0, 0.0);
+    /// All components NaN: what the crate returns for undefined results.
+    pub const NAN: Self = Self::new(f32::NAN, f32::NAN, f32::NAN, f32::NAN);
 
     /// Builds a vector from its coordinates.
     ///
@@ -361,8 +363,7 @@ impl Cvec4 {
     #[inline]
     #[must_use]
     pub fn normalize(self) -> Self {
-        self.try_normalize()
-            .unwrap_or(Self::new(f32::NAN, f32::NAN, f32::NAN, f32::NAN))
+        self.try_normalize().unwrap_or(Self::NAN)
     }
 
     /// Linear interpolation `(1 - alpha) self + alpha other` of all four
@@ -489,6 +490,9 @@ mod tests {
         assert!(Cvec3::new(f32::INFINITY, 0.0, 0.0).normalize().y.is_nan());
         assert!(Cvec4::ZERO.normalize().w.is_nan());
         assert_eq!(Cvec3::new(f32::MAX, 0.0, 0.0).normalize(), Cvec3::X);
+        // As documented for norm: lengths beyond f32::MAX round to infinity.
+        assert_eq!(Cvec3::new(f32::MAX, f32::MAX, 0.0).norm(), f32::INFINITY);
+        assert_eq!(Cvec4::new(f32::MAX, 0.0, 0.0, 0.0).norm(), f32::MAX);
     }
 
     #[test]
