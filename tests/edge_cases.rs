@@ -8,8 +8,7 @@ use common::{finite_edges, EDGE_F32};
 use core::f32::consts::PI;
 use rand::{Rng, SeedableRng};
 use rigtform::accuracy::{
-    MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, POW_MAX_ANGLE_ERROR, SLERP_MAX_ANGLE_ERROR,
-    UNIT_NORM_ERROR,
+    MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, SLERP_MAX_ANGLE_ERROR, UNIT_NORM_ERROR,
 };
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 
@@ -27,7 +26,7 @@ fn edge_quats() -> impl Iterator<Item = Quat> {
 /// The documented error of a power that turns by `turn` radians, plus the
 /// product inside `angle_to` that measures it.
 fn pow_bound(turn: f32) -> f32 {
-    POW_MAX_ANGLE_ERROR * turn.abs().max(1.0) + MUL_MAX_ANGLE_ERROR
+    common::pow_tol(1.0, turn) + MUL_MAX_ANGLE_ERROR
 }
 
 fn is_nan_quat(q: Quat) -> bool {

@@ -5,24 +5,14 @@
 
 mod common;
 
-use common::{max_entry_diff, rig_tform, unit_quat, vec3};
+use common::{max_entry_diff, pow_tol, rig_tform, slerp_tol, unit_quat, vec3};
 use core::f32::consts::PI;
 use proptest::prelude::*;
 use rigtform::accuracy::{
     MATRIX_ENTRY_ERROR, MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, POW_MAX_ANGLE_ERROR,
-    ROTATE_MAX_REL_ERROR, SLERP_MAX_ANGLE_ERROR, UNIT_NORM_ERROR,
+    ROTATE_MAX_REL_ERROR, UNIT_NORM_ERROR,
 };
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
-
-/// The documented pow error for a turn of `alpha` times `theta` radians.
-fn pow_tol(alpha: f32, theta: f32) -> f32 {
-    POW_MAX_ANGLE_ERROR * (alpha * theta).abs().max(1.0)
-}
-
-/// The documented slerp error for a turn of `alpha` times `theta` radians.
-fn slerp_tol(alpha: f32, theta: f32) -> f32 {
-    SLERP_MAX_ANGLE_ERROR * (alpha * theta).abs().max(1.0)
-}
 
 /// The angle of a unit quaternion as the notes' power operator sees it, 2 atan2(|v|, w).
 fn quat_angle(q: Quat) -> f32 {

@@ -41,23 +41,21 @@ pub fn finite_edges() -> impl Iterator<Item = f32> {
     EDGE_F32.into_iter().filter(|x| x.is_finite())
 }
 
-/// A uniformly distributed unit quaternion (rejection sampling in the 4-cube,
-/// computed in f64, rounded to f32).
+/// A point drawn uniformly in the 4-cube, kept if it lies in the unit ball
+/// (away from the origin) and projected onto the sphere: rejection sampling
+/// that makes unit quaternions uniformly distributed rotations.
+fn unit_from_cube(v: [f64; 4]) -> Option<na::Quaternion<f64>> {
+    let n2: f64 = v.iter().map(|c| c * c).sum();
+    (0.01..=1.0)
+        .contains(&n2)
+        .then(|| na::Quaternion::new(v[0], v[1], v[2], v[3]).normalize())
+}
+
+/// A uniformly distributed unit quaternion, rounded to f32.
 pub fn unit_quat() -> impl Strategy<Value = Quat> {
     prop::array::uniform4(-1.0f64..1.0)
-        .prop_filter("inside the unit ball, away from 0", |v| {
-            let n2: f64 = v.iter().map(|c| c * c).sum();
-            (0.01..=1.0).contains(&n2)
-        })
-        .prop_map(|v| {
-            let n = v.iter().map(|c| c * c).sum::<f64>().sqrt();
-            Quat::new(
-                (v[0] / n) as f32,
-                (v[1] / n) as f32,
-                (v[2] / n) as f32,
-                (v[3] / n) as f32,
-            )
-        })
+        .prop_filter_map("inside the unit ball, away from 0", unit_from_cube)
+        .prop_map(to_f32)
 }
 
 /// A vector with components in [-100, 100].
@@ -85,10 +83,8 @@ impl Draws {
     }
     pub fn unit_quat64(&mut self) -> na::Quaternion<f64> {
         loop {
-            let v = [(); 4].map(|_| self.uniform(-1.0, 1.0));
-            let n2: f64 = v.iter().map(|c| c * c).sum();
-            if (0.01..=1.0).contains(&n2) {
-                return na::Quaternion::new(v[0], v[1], v[2], v[3]).normalize();
+            if let Some(q) = unit_from_cube([(); 4].map(|_| self.uniform(-1.0, 1.0))) {
+                return q;
             }
         }
     }
@@ -158,6 +154,18 @@ pub fn slerp64(
         d = -d;
     }
     pow64(d, alpha) * q0
+}
+
+/// The documented pow error (`accuracy::POW_MAX_ANGLE_ERROR`) for a turn of
+/// `alpha` times `theta` radians: per radian turned, at least one radian.
+pub fn pow_tol(alpha: f32, theta: f32) -> f32 {
+    rigtform::accuracy::POW_MAX_ANGLE_ERROR * (alpha * theta).abs().max(1.0)
+}
+
+/// The documented slerp error (`accuracy::SLERP_MAX_ANGLE_ERROR`) for a turn
+/// of `alpha` times `theta` radians.
+pub fn slerp_tol(alpha: f32, theta: f32) -> f32 {
+    rigtform::accuracy::SLERP_MAX_ANGLE_ERROR * (alpha * theta).abs().max(1.0)
 }
 
 /// Largest absolute entry difference of two column-major arrays.
