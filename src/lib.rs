@@ -26,7 +26,10 @@
 //! # Numerics contract
 //!
 //! 1. No function panics, for any input bits: there is no `unwrap`, no
-//!    fallible indexing and no integer arithmetic that can overflow.
+//!    fallible indexing and no integer arithmetic that can overflow. The
+//!    tests call every function on all quaternions made of 24 edge values and
+//!    on 100,000 random bit patterns, in debug and release builds
+//!    (`tests/edge_cases.rs`); that is testing, not proof.
 //! 2. Bad input gets a documented result: NaN out for NaN or infinite in,
 //!    `None` for a singular matrix, [`Quat::IDENTITY`] where there is no
 //!    rotation to speak of (each method says which).

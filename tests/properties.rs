@@ -251,6 +251,7 @@ proptest! {
 
     #[test]
     fn rigtform_interpolation_moves_the_origin_on_a_straight_line_at_constant_speed(a in rig_tform(), b in rig_tform(), alpha in 0.0f32..1.0) {
+        prop_assert_eq!(a.interpolate(b, 0.0), a);
         let p = a.interpolate(b, alpha).t;
         prop_assert!(close(p, a.t + (b.t - a.t) * alpha, 1e-5));
     }
