@@ -547,15 +547,14 @@ impl Quat {
     /// ```
     #[must_use]
     pub fn blend(entries: &[(Quat, f32)]) -> Self {
-        let Some(&(first, _)) = entries.first() else {
-            return Self::IDENTITY;
-        };
+        let first = entries.first().map_or(Self::IDENTITY, |&(q, _)| q);
         let mut sum = Self::new(0.0, 0.0, 0.0, 0.0);
         for &(q, weight) in entries {
             let weight = if q.dot(first) < 0.0 { -weight } else { weight };
             sum = sum.weighted_sum(1.0, q, weight);
         }
-        if sum.is_finite() && sum == Self::new(0.0, 0.0, 0.0, 0.0) {
+        // An empty slice, or weights that cancel: no rotation information.
+        if sum == Self::new(0.0, 0.0, 0.0, 0.0) {
             return Self::IDENTITY;
         }
         sum.normalize()
