@@ -34,6 +34,11 @@
 //! | [`ATAN2_MAX_ABS_ERROR`] | 2.5e-7 | 3.5e-3 |
 //! | [`SIN_COS_MAX_ABS_ERROR`] | 6.0e-8 | 1.4e-3 |
 //! | [`TAN_MAX_REL_ERROR`] | 1.2e-7 | 1.6e-2 |
+//! | [`FROM_SCALED_AXIS_MAX_REL_ERROR`] | 3.0e-7 | 8.5e-3 |
+//! | [`TO_SCALED_AXIS_MAX_REL_ERROR`] | 3.2e-7 | 8.0e-2 |
+//! | [`EXP_LOG_POW_MAX_ANGLE_ERROR`] | 4.5e-7 | 2.7e-3 |
+//! | [`INTEGRATE_STEP_MAX_ANGLE_ERROR`] | 4.0e-7 | 2.8e-3 |
+//! | [`SMOOTHER_DECAY_MAX_ERROR`] | 1.0e-5 | 1.25e-2 |
 
 /// The bounds that depend on the float backend: measured maxima over 10^7
 /// draws in the comments, rounded up by about 25 %.
@@ -45,6 +50,11 @@ mod backend {
     pub const UNIT_NORM_ERROR: f32 = 3.2e-7; // 2.519e-7 (slerp, pi - 1e-4 apart)
     pub const POW_MAX_ANGLE_ERROR: f32 = 3.2e-7; // 2.529e-7 (pow), 2.465e-7 (to_axis_angle)
     pub const SLERP_MAX_ANGLE_ERROR: f32 = 5.5e-7; // 4.398e-7 (random pairs)
+    pub const FROM_SCALED_AXIS_MAX_REL_ERROR: f32 = 3.0e-7; // 2.426e-7
+    pub const TO_SCALED_AXIS_MAX_REL_ERROR: f32 = 3.2e-7; // 2.495e-7
+    pub const EXP_LOG_POW_MAX_ANGLE_ERROR: f32 = 4.5e-7; // 3.612e-7
+    pub const INTEGRATE_STEP_MAX_ANGLE_ERROR: f32 = 4.0e-7; // 3.206e-7
+    pub const SMOOTHER_DECAY_MAX_ERROR: f32 = 1.0e-5; // 7.480e-6 (100 Hz and 1 kHz, 2 s)
 }
 
 /// micromath's kernels (`cargo test --features fast-math --tests -- --nocapture`).
@@ -56,6 +66,11 @@ mod backend {
     pub const UNIT_NORM_ERROR: f32 = 1.25e-3; // 9.984e-4 (pow, slerp)
     pub const POW_MAX_ANGLE_ERROR: f32 = 2.3e-2; // 1.867e-2 (pow), 5.656e-3 (to_axis_angle)
     pub const SLERP_MAX_ANGLE_ERROR: f32 = 1.6e-2; // 1.344e-2 (random pairs)
+    pub const FROM_SCALED_AXIS_MAX_REL_ERROR: f32 = 8.5e-3; // 6.729e-3
+    pub const TO_SCALED_AXIS_MAX_REL_ERROR: f32 = 8.0e-2; // 6.345e-2 (micromath's atan2 near 0)
+    pub const EXP_LOG_POW_MAX_ANGLE_ERROR: f32 = 2.7e-3; // 2.128e-3
+    pub const INTEGRATE_STEP_MAX_ANGLE_ERROR: f32 = 2.8e-3; // 2.189e-3
+    pub const SMOOTHER_DECAY_MAX_ERROR: f32 = 1.25e-2; // 9.920e-3
 }
 
 /// Relative error of the square root kernel (`src/float.rs`, `sweep_sqrt`).
@@ -83,6 +98,25 @@ pub const ROTATE_MAX_REL_ERROR: f32 = 6.0e-7; // 4.710e-7
 /// f32 product `alpha phi` handed to sin and cos is itself rounded. Also the
 /// error of the angle returned by `to_axis_angle` (at most pi).
 pub const POW_MAX_ANGLE_ERROR: f32 = backend::POW_MAX_ANGLE_ERROR;
+/// Angle error of `Quat::from_scaled_axis(v)`, relative to the angle `|v|`:
+/// at most `FROM_SCALED_AXIS_MAX_REL_ERROR * |v|` radians, for angles from
+/// subnormal to 1000 rad (`tests/attitude.rs`).
+pub const FROM_SCALED_AXIS_MAX_REL_ERROR: f32 = backend::FROM_SCALED_AXIS_MAX_REL_ERROR;
+/// Error of `q.to_scaled_axis()` for unit `q`, relative to the length of
+/// the exact rotation vector (angles from subnormal to 2 pi).
+pub const TO_SCALED_AXIS_MAX_REL_ERROR: f32 = backend::TO_SCALED_AXIS_MAX_REL_ERROR;
+/// Angle between `Quat::from_scaled_axis(a * q.to_scaled_axis())` and
+/// `q.pow(a)`, in the form of [`POW_MAX_ANGLE_ERROR`]: at most
+/// `EXP_LOG_POW_MAX_ANGLE_ERROR * max(1, |a| theta)` radians.
+pub const EXP_LOG_POW_MAX_ANGLE_ERROR: f32 = backend::EXP_LOG_POW_MAX_ANGLE_ERROR;
+/// Angle error, in radians, of one `q.integrate(omega, dt)` step for unit
+/// `q` and `|omega dt|` up to 1 rad; `n` steps are within `n` times this.
+pub const INTEGRATE_STEP_MAX_ANGLE_ERROR: f32 = backend::INTEGRATE_STEP_MAX_ANGLE_ERROR;
+/// Largest difference, in radians, between the angle an
+/// `attitude::Smoother` has left to a constant measurement and the exact
+/// `theta_0 exp(-t / tau)`, over up to 2,000 updates at 100 Hz and 1 kHz
+/// (`step_response_has_the_time_constant_at_100_hz_and_1_khz`).
+pub const SMOOTHER_DECAY_MAX_ERROR: f32 = backend::SMOOTHER_DECAY_MAX_ERROR;
 /// Angle error of `a.slerp(b, alpha)` for unit inputs, in the same form as
 /// [`POW_MAX_ANGLE_ERROR`]: at most `SLERP_MAX_ANGLE_ERROR * max(1, |alpha| theta)`
 /// with `theta = a.angle_to(b)` (at most pi). So for `alpha` in [0, 1] it is
@@ -119,6 +153,23 @@ mod tests {
             ("ATAN2_MAX_ABS_ERROR", super::ATAN2_MAX_ABS_ERROR),
             ("SIN_COS_MAX_ABS_ERROR", super::SIN_COS_MAX_ABS_ERROR),
             ("TAN_MAX_REL_ERROR", super::TAN_MAX_REL_ERROR),
+            (
+                "FROM_SCALED_AXIS_MAX_REL_ERROR",
+                super::FROM_SCALED_AXIS_MAX_REL_ERROR,
+            ),
+            (
+                "TO_SCALED_AXIS_MAX_REL_ERROR",
+                super::TO_SCALED_AXIS_MAX_REL_ERROR,
+            ),
+            (
+                "EXP_LOG_POW_MAX_ANGLE_ERROR",
+                super::EXP_LOG_POW_MAX_ANGLE_ERROR,
+            ),
+            (
+                "INTEGRATE_STEP_MAX_ANGLE_ERROR",
+                super::INTEGRATE_STEP_MAX_ANGLE_ERROR,
+            ),
+            ("SMOOTHER_DECAY_MAX_ERROR", super::SMOOTHER_DECAY_MAX_ERROR),
         ];
         let tables = [
             ("src/accuracy.rs", include_str!("accuracy.rs"), "//! | [`"),

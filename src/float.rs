@@ -98,6 +98,16 @@ pub(crate) fn tan(x: f32) -> f32 {
     libm::tanf(x)
 }
 
+/// `e^x - 1`, accurate also where `e^x` is close to 1: libm's `expm1f`
+/// (within 1 ulp), with both backends (micromath has no `exp_m1`, and the
+/// smoothing factors `1 - e^(-dt/tau)` built on it need relative accuracy
+/// for `dt` far below `tau`).
+#[inline]
+#[must_use]
+pub(crate) fn exp_m1(x: f32) -> f32 {
+    libm::expm1f(x)
+}
+
 /// 2^-6: below this, fast-math's sine and cosine are Taylor polynomials.
 #[cfg(feature = "fast-math")]
 const FAST_SIN_COS_TAYLOR: f32 = 0.015625;
@@ -226,6 +236,19 @@ mod tests {
         }
         std::println!("sqrt: max relative error {worst:.3e}");
         assert!(worst <= accuracy::SQRT_MAX_REL_ERROR as f64, "{worst}");
+    }
+
+    #[test]
+    fn sweep_exp_m1() {
+        let mut worst: f64 = 0.0;
+        // The smoothing factors' range: -dt/tau from -1e-7 to -50.
+        for x in spread(-50.0, 0.0, 200_000).chain(spread(-1e-3, -1e-7, 10_000)) {
+            worst = worst.max(ulps(exp_m1(x), (x as f64).exp_m1()));
+        }
+        std::println!("exp_m1: max error {worst:.3} ulp");
+        assert!(worst <= 1.0, "{worst}");
+        assert_eq!(exp_m1(f32::NEG_INFINITY), -1.0);
+        assert!(exp_m1(f32::NAN).is_nan());
     }
 
     #[test]

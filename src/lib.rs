@@ -84,6 +84,7 @@
 #![forbid(unsafe_code)]
 
 pub mod accuracy;
+pub mod attitude;
 mod features;
 mod float;
 mod matrix;

@@ -50,9 +50,9 @@ impl Default for Quat {
 
 /// The unit axis and the angle `phi = atan2(beta, w)` of the notes' "Power"
 /// section: `self = |self| (cos phi, sin phi axis)`.
-struct Polar {
-    axis: Cvec3,
-    phi: f32,
+pub(crate) struct Polar {
+    pub(crate) axis: Cvec3,
+    pub(crate) phi: f32,
 }
 
 impl Quat {
@@ -173,7 +173,7 @@ impl Quat {
     }
 
     #[inline]
-    const fn from_scalar_vector(w: f32, v: Cvec3) -> Self {
+    pub(crate) const fn from_scalar_vector(w: f32, v: Cvec3) -> Self {
         Self::new(w, v.x, v.y, v.z)
     }
 
@@ -326,7 +326,7 @@ impl Quat {
     /// by 2 pi) and `phi = 0` otherwise (including zero).
     ///
     /// The caller has checked that every component is finite.
-    fn polar(self) -> Polar {
+    pub(crate) fn polar(self) -> Polar {
         let v = scale_for_squares([self.x, self.y, self.z, 0.0]);
         if v.sum == 0.0 {
             let phi = if self.w < 0.0 {

@@ -1,0 +1,65 @@
+//! The frame-rate independent first-order low-pass that every time constant
+//! of the attitude module means: the smoothing factor
+//! `alpha = 1 - exp(-dt / tau)`.
+
+use crate::float;
+
+/// The fraction `alpha = 1 - exp(-dt / tau)` of the way towards a constant
+/// input that a first-order low-pass with time constant `tau` moves in `dt`.
+/// Steps compose exactly: two steps of `dt` leave `(1 - alpha)^2 =
+/// exp(-2 dt / tau)` of the distance, as one step of `2 dt` does, so the
+/// response does not depend on the sample rate.
+///
+/// Documented results for the edges: `dt <= 0` gives 0 (no time passed,
+/// nothing moves; a negative `dt` does not extrapolate), `tau <= 0` with
+/// `dt > 0` gives 1 (no smoothing), `tau = +inf` gives 0 (frozen). NaN in
+/// either gives NaN. Computed with `exp_m1`, so `alpha` keeps its relative
+/// precision for `dt` far below `tau`.
+#[inline]
+#[must_use]
+pub(crate) fn smoothing_factor(dt: f32, tau: f32) -> f32 {
+    if dt.is_nan() || tau.is_nan() {
+        return f32::NAN;
+    }
+    if dt <= 0.0 {
+        return 0.0;
+    }
+    if tau <= 0.0 {
+        return 1.0;
+    }
+    // dt / tau may overflow to infinity: exp_m1(-inf) = -1 gives 1.
+    -float::exp_m1(-dt / tau)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn smoothing_factor_of_edges() {
+        assert_eq!(smoothing_factor(0.0, 1.0), 0.0);
+        assert_eq!(smoothing_factor(-1.0, 1.0), 0.0);
+        assert_eq!(smoothing_factor(0.01, 0.0), 1.0);
+        assert_eq!(smoothing_factor(0.01, -2.0), 1.0);
+        assert_eq!(smoothing_factor(0.01, f32::INFINITY), 0.0);
+        assert_eq!(smoothing_factor(f32::INFINITY, 1.0), 1.0);
+        assert_eq!(smoothing_factor(f32::MAX, 1e-30), 1.0);
+        assert!(smoothing_factor(f32::NAN, 1.0).is_nan());
+        assert!(smoothing_factor(0.01, f32::NAN).is_nan());
+    }
+
+    #[test]
+    fn smoothing_factor_is_one_minus_exp_and_composes_exactly() {
+        for (dt, tau) in [(0.01f32, 1.0f32), (1e-6, 3.0), (0.5, 0.1), (0.0035, 0.5)] {
+            let want = 1.0 - (-(dt as f64) / tau as f64).exp();
+            let got = smoothing_factor(dt, tau) as f64;
+            assert!(
+                (got - want).abs() <= 2.4e-7 * want,
+                "{dt} {tau}: {got} {want}"
+            );
+            // Two half steps leave what one whole step leaves.
+            let half = 1.0 - smoothing_factor(dt / 2.0, tau) as f64;
+            assert!((half * half - (1.0 - want)).abs() < 1e-6, "{dt} {tau}");
+        }
+    }
+}
