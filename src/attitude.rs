@@ -26,9 +26,13 @@
 //! - [`Quat::integrate`](crate::Quat::integrate): one exact step of body
 //!   rates.
 //! - [`Smoother`]: a slerp low-pass with a time constant.
+//! - [`OrientationFilter`] with [`FilterParams`]: gyroscope + accelerometer
+//!   (+ magnetometer) fusion with gyro-bias estimation.
 
 mod exp_map;
+mod filter;
 mod low_pass;
 mod smoother;
 
+pub use filter::{FilterParams, OrientationFilter};
 pub use smoother::Smoother;

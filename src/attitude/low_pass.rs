@@ -1,8 +1,9 @@
 //! The frame-rate independent first-order low-pass that every time constant
 //! of the attitude module means: the smoothing factor
-//! `alpha = 1 - exp(-dt / tau)`.
+//! `alpha = 1 - exp(-dt / tau)`, and a low-pass of a 3-vector built on it.
 
 use crate::float;
+use crate::vec::Cvec3;
 
 /// The fraction `alpha = 1 - exp(-dt / tau)` of the way towards a constant
 /// input that a first-order low-pass with time constant `tau` moves in `dt`.
@@ -29,6 +30,30 @@ pub(crate) fn smoothing_factor(dt: f32, tau: f32) -> f32 {
     }
     // dt / tau may overflow to infinity: exp_m1(-inf) = -1 gives 1.
     -float::exp_m1(-dt / tau)
+}
+
+/// A first-order low-pass of a 3-vector: `y += alpha (x - y)` with
+/// [`smoothing_factor`]. Exact for inputs held constant over each step, so
+/// its response does not depend on the sample rate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct LowPass3 {
+    /// The filtered value.
+    pub(crate) value: Cvec3,
+}
+
+impl LowPass3 {
+    /// Starts at `value`, as if it had been the input forever.
+    pub(crate) const fn new(value: Cvec3) -> Self {
+        Self { value }
+    }
+
+    /// One step of `alpha` (a [`smoothing_factor`]) towards `input`;
+    /// returns the new value.
+    #[inline]
+    pub(crate) fn update(&mut self, input: Cvec3, alpha: f32) -> Cvec3 {
+        self.value += (input - self.value) * alpha;
+        self.value
+    }
 }
 
 #[cfg(test)]
@@ -61,5 +86,19 @@ mod tests {
             let half = 1.0 - smoothing_factor(dt / 2.0, tau) as f64;
             assert!((half * half - (1.0 - want)).abs() < 1e-6, "{dt} {tau}");
         }
+    }
+
+    #[test]
+    fn low_pass_moves_the_fraction_alpha() {
+        let mut lp = LowPass3::new(Cvec3::ZERO);
+        assert_eq!(
+            lp.update(Cvec3::new(4.0, -8.0, 2.0), 0.25),
+            Cvec3::new(1.0, -2.0, 0.5)
+        );
+        assert_eq!(lp.value, Cvec3::new(1.0, -2.0, 0.5));
+        assert_eq!(
+            lp.update(Cvec3::new(3.0, 0.0, 0.0), 1.0),
+            Cvec3::new(3.0, 0.0, 0.0)
+        );
     }
 }

@@ -15,7 +15,7 @@ use crate::quat::Quat;
 ///
 /// Use it to take the jitter out of a displayed or logged attitude. It lags
 /// a moving measurement by about `tau` seconds; it knows nothing of gyros
-/// (for sensor fusion, see the orientation filter).
+/// (for sensor fusion, see [`OrientationFilter`](super::OrientationFilter)).
 ///
 /// State: one [`Quat`] and the time constant, 20 bytes.
 ///

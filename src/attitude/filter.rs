@@ -1,0 +1,569 @@
+//! [`OrientationFilter`]: gyroscope + accelerometer (6D) and + magnetometer
+//! (9D) attitude estimation, with gyro-bias estimation.
+
+use super::low_pass::{smoothing_factor, LowPass3};
+use crate::float;
+use crate::quat::Quat;
+use crate::vec::Cvec3;
+
+/// The parameters of an [`OrientationFilter`], with their units. One set,
+/// [`FilterParams::DEFAULT`], chosen from sensor and motion physics (see the
+/// field docs and the README's IMU section), not fitted to any recording.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[repr(C)]
+pub struct FilterParams {
+    /// Magnitude of gravity in the accelerometer's unit: 9.81 for m/s²,
+    /// 1.0 for g. Only the gates below use it (relative to it).
+    pub gravity: f32,
+    /// Time constant of the inclination correction, in seconds (default
+    /// 3 s): the delay of the low-pass that averages the accelerometer in
+    /// an almost inertial frame. Longer rejects linear accelerations better
+    /// (a velocity change `dv` leaks in as at most about
+    /// `2 dv / (e g tau_acc)` radians of tilt) but lets gyro errors drift
+    /// longer (about `residual bias * tau_acc`). With `dv` about 0.5 m/s
+    /// for hand-held motion and a residual bias of about 0.1 °/s, the sum
+    /// is smallest between 3 and 5 s; 3 s is the low end, because gyro
+    /// scale errors during fast rotation also drift. Zero or negative: the
+    /// inclination follows each accelerometer sample (no averaging).
+    pub tau_acc: f32,
+    /// Time constant of the heading correction by the magnetometer, in
+    /// seconds (default 10 s). Indoor magnetic disturbances pass in seconds
+    /// as the sensor moves, while a residual gyro bias of 0.1 °/s about the
+    /// vertical drifts only 1° in 10 s.
+    pub tau_mag: f32,
+    /// Time constant, in seconds, with which the gyro bias follows the
+    /// corrections during motion (default 20 s): it has to be several times
+    /// `tau_acc` for the bias loop to stay well damped, and long enough to
+    /// average out the corrections that linear accelerations cause. The
+    /// bias changes with temperature over minutes. Infinite: no bias
+    /// estimation during motion.
+    pub tau_bias: f32,
+    /// Time constant, in seconds, of the bias estimate while at rest, where
+    /// the gyro reads its bias plus noise (default 3 s).
+    pub tau_bias_rest: f32,
+    /// Rest detection, gyro: the rate (rad/s) must stay within this of its
+    /// 0.5 s low-pass (default 2 °/s, 0.035 rad/s: above the noise of MEMS
+    /// gyros, below deliberate motion).
+    pub rest_gyro: f32,
+    /// The largest gyro bias the filter learns, in rad/s (default 2 °/s,
+    /// 0.035 rad/s, the zero-rate offset of a MEMS gyro after factory
+    /// calibration). The estimate is clipped to it; rest is only detected
+    /// while the low-passed gyro is below it, so that a slow steady turn is
+    /// not taken for a bias; and during motion, corrections faster than it
+    /// (convergence from a wrong start, a heading jump) are not taken for
+    /// a bias either.
+    pub max_bias: f32,
+    /// Rest detection, accelerometer: the specific force must stay within
+    /// this fraction of `gravity` of its 0.5 s low-pass (default 0.05).
+    pub rest_acc: f32,
+    /// Rest detection: how long both conditions must hold, in seconds
+    /// (default 1.5 s).
+    pub rest_time: f32,
+    /// Acceleration-magnitude gate, a fraction of `gravity` (default 0.1):
+    /// the inclination is corrected only while the averaged specific force
+    /// is within it of `gravity`, and the bias learns from a correction only
+    /// while the current sample is within it too (a correction made during
+    /// strong linear acceleration says little about the gyro).
+    pub acc_gate: f32,
+    /// Magnetic disturbance gate, a fraction of the reference field
+    /// (default 0.1): the heading is corrected only while the measured
+    /// field, in the earth frame, is within this distance of the reference
+    /// field (its horizontal and vertical parts, so a change of the dip
+    /// counts as much as a change of strength). The reference is the first
+    /// field measured, and then follows the measurements with a 60 s time
+    /// constant, so that a new environment is accepted after a minute.
+    pub mag_gate: f32,
+}
+
+impl FilterParams {
+    /// The one parameter set used for every recording, chosen from physics
+    /// (each field's docs give the argument).
+    ///
+    /// ```
+    /// use rigtform::attitude::FilterParams;
+    /// assert_eq!(FilterParams::default(), FilterParams::DEFAULT);
+    /// assert_eq!(FilterParams::DEFAULT.tau_acc, 3.0);
+    /// ```
+    pub const DEFAULT: Self = Self {
+        gravity: 9.81,
+        tau_acc: 3.0,
+        tau_mag: 10.0,
+        tau_bias: 20.0,
+        tau_bias_rest: 3.0,
+        rest_gyro: 0.035,
+        max_bias: 0.035,
+        rest_acc: 0.05,
+        rest_time: 1.5,
+        acc_gate: 0.1,
+        mag_gate: 0.1,
+    };
+}
+
+impl Default for FilterParams {
+    /// [`FilterParams::DEFAULT`].
+    fn default() -> Self {
+        Self::DEFAULT
+    }
+}
+
+/// Time constant of the low-passes behind rest detection, in seconds.
+const REST_LOW_PASS_TAU: f32 = 0.5;
+/// Time constant with which the magnetic reference follows the field.
+const MAG_REFERENCE_TAU: f32 = 60.0;
+
+/// The rest detector: low-passes of the raw gyro and accelerometer in the
+/// sensor frame, and how long both have stayed close to them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+struct Rest {
+    gyro: Cvec3,
+    acc: Cvec3,
+    /// Seconds that both conditions have held.
+    time: f32,
+}
+
+/// An orientation filter for gyroscope + accelerometer (6D, [`update`](Self::update))
+/// and gyroscope + accelerometer + magnetometer (9D,
+/// [`update_with_mag`](Self::update_with_mag)): a complementary filter with
+/// gyro-bias estimation, in the attitude conventions of the
+/// [module](super) (sensor to ENU earth frame).
+///
+/// # How it works
+///
+/// The attitude is the product `correction * strapdown`:
+///
+/// 1. `strapdown` integrates the bias-corrected gyro exactly
+///    ([`Quat::integrate`]). It maps the sensor frame into an almost
+///    inertial frame, which drifts only as slowly as the gyro errors.
+/// 2. The accelerometer, rotated into that frame, goes through a
+///    critically damped second-order low-pass (two first-order stages of
+///    `tau_acc / 2`). In an inertial frame, linear acceleration is the
+///    derivative of velocity, which stays bounded, so the average tends to
+///    gravity: shaking, running and vibration average out, rather than
+///    tilting the estimate as in a filter that trusts each sample's
+///    direction. This is the central idea of VQF (Laidig and Seel,
+///    *VQF: Highly Accurate IMU Orientation Estimation with Bias Estimation
+///    and Magnetic Disturbance Rejection*, Information Fusion 91, 2023),
+///    here in a simpler filter.
+/// 3. `correction` is then turned, about a horizontal axis, by the
+///    smallest rotation that makes the averaged vector point up: the
+///    inclination correction. It is skipped while the averaged magnitude is
+///    more than `acc_gate` away from gravity.
+/// 4. With a magnetometer, `correction` also turns about the vertical
+///    (only: a disturbed field can never tilt the estimate) towards
+///    magnetic north (the horizontal part of the field along +y), by the
+///    fraction `1 - exp(-dt / tau_mag)` of the heading error, while the
+///    field passes the disturbance gate.
+/// 5. Gyro bias: while at rest (rest detection on gyro and accelerometer),
+///    the bias low-passes the raw gyro. During motion, each correction,
+///    expressed in the sensor frame, is the drift a bias error caused; the
+///    bias follows it with time constant `tau_bias` (Mahony's integral
+///    term, in time-constant form), when the sample passes the
+///    acceleration gate.
+///
+/// The first sample with a usable accelerometer vector sets the
+/// inclination (the low-pass starts there, as if at rest); with a
+/// magnetometer, the first usable field sets the heading.
+///
+/// Every time constant works through `1 - exp(-dt / tau)`, so the filter
+/// behaves the same at any sample rate, and with jittering `dt`.
+///
+/// # State and cost
+///
+/// 136 bytes including the parameters (`size_of`, checked by a test), no
+/// allocation. One update costs two quaternion products, three vector
+/// rotations, two normalizations and a handful of vector operations; with a
+/// magnetometer one more rotation, an atan2 and a sine-cosine.
+///
+/// # Bad input
+///
+/// - NaN or infinite gyro or `dt`: the update returns [`Quat::NAN`] and
+///   leaves the state unchanged (one bad sample does not poison the
+///   filter). `dt <= 0`: nothing happens (no time passed); the current
+///   attitude is returned.
+/// - NaN, infinite or zero accelerometer vector: the sample only
+///   propagates the gyro (no correction, no rest detection). A zero vector
+///   (free fall) is a valid specific force, but carries no direction.
+/// - NaN, infinite or zero magnetometer vector, or a field without
+///   horizontal part: no heading correction for that sample.
+/// - Parameters: zero or negative time constants mean "immediate" (no
+///   smoothing), infinite ones "never"; NaN parameters make updates return
+///   NaN attitudes without a panic.
+///
+/// # Accuracy
+///
+/// Measured on real recordings with optical ground truth (BROAD trials 02,
+/// 07 and 16): see the README's IMU section and `examples/broad.rs`. On
+/// trial 16 (shipped in `tests/data/`), 6D inclination RMSE below
+/// [`accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG`](crate::accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG)
+/// degrees (`tests/broad.rs`).
+///
+/// # Examples
+///
+/// ```
+/// use rigtform::attitude::{FilterParams, OrientationFilter};
+/// use rigtform::{Cvec3, Quat};
+///
+/// let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+/// // Lying still, tilted 0.3 rad about x: gravity's reaction seen in the sensor frame.
+/// let tilt = Quat::from_rotation_x(0.3);
+/// let acc = tilt.inv() * Cvec3::new(0.0, 0.0, 9.81);
+/// let gyr = Cvec3::new(0.01, -0.02, 0.005); // a biased gyro, at rest
+/// for _ in 0..2000 {
+///     f.update(gyr, acc, 0.01); // 100 Hz, 20 s
+/// }
+/// // Inclination found, bias learned at rest:
+/// let up = f.attitude() * (acc * (1.0 / 9.81));
+/// assert!((up - Cvec3::Z).norm() < 1e-3);
+/// assert!((f.bias() - gyr).norm() < 1e-3);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct OrientationFilter {
+    /// The parameters; they may be changed between updates.
+    pub params: FilterParams,
+    /// Sensor to the almost inertial frame: the integrated gyro.
+    strapdown: Quat,
+    /// The almost inertial frame to earth: all corrections.
+    correction: Quat,
+    /// The two stages of the accelerometer low-pass, in the inertial frame.
+    acc_stage1: Cvec3,
+    acc_stage2: Cvec3,
+    /// The gyro bias estimate, rad/s, sensor frame.
+    bias: Cvec3,
+    rest: Rest,
+    /// Reference field in the earth frame as (horizontal, vertical, 0);
+    /// NaN until the first usable magnetometer sample.
+    mag_reference: Cvec3,
+    /// Whether the inclination has been set from an accelerometer sample.
+    initialized: bool,
+}
+
+impl OrientationFilter {
+    /// A filter that sets its inclination from the first usable
+    /// accelerometer sample, and its heading from the first usable
+    /// magnetometer sample (until then it reports a heading of its own
+    /// choosing). Bias estimate zero.
+    ///
+    /// ```
+    /// use rigtform::attitude::{FilterParams, OrientationFilter};
+    /// use rigtform::{Cvec3, Quat};
+    /// let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    /// let q = f.update(Cvec3::ZERO, Cvec3::new(0.0, 9.81, 0.0), 0.01);
+    /// // Sensor y axis up: a quarter turn about x (sensor to earth).
+    /// assert!((q * Cvec3::Y - Cvec3::Z).norm() < 1e-6);
+    /// ```
+    #[must_use]
+    pub const fn new(params: FilterParams) -> Self {
+        Self {
+            params,
+            strapdown: Quat::IDENTITY,
+            correction: Quat::IDENTITY,
+            acc_stage1: Cvec3::ZERO,
+            acc_stage2: Cvec3::ZERO,
+            bias: Cvec3::ZERO,
+            // NaN: started by the first sample.
+            rest: Rest {
+                gyro: Cvec3::NAN,
+                acc: Cvec3::NAN,
+                time: 0.0,
+            },
+            mag_reference: Cvec3::NAN,
+            initialized: false,
+        }
+    }
+
+    /// A filter that starts from a known `attitude` (a unit quaternion),
+    /// as if it had been at rest there: the accelerometer average starts at
+    /// gravity as that attitude predicts it, so a wrong starting
+    /// inclination is corrected over about `tau_acc` seconds, not at once.
+    /// The heading is still set by the first usable magnetometer sample in
+    /// 9D.
+    ///
+    /// ```
+    /// use rigtform::attitude::{FilterParams, OrientationFilter};
+    /// use rigtform::{Cvec3, Quat};
+    /// let start = Quat::from_rotation_y(0.2);
+    /// let f = OrientationFilter::with_attitude(FilterParams::DEFAULT, start);
+    /// assert!(f.attitude().angle_to(start) < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn with_attitude(params: FilterParams, attitude: Quat) -> Self {
+        let mut f = Self::new(params);
+        f.correction = attitude;
+        let gravity = Cvec3::new(0.0, 0.0, params.gravity);
+        f.acc_stage1 = gravity;
+        f.acc_stage2 = gravity;
+        f.initialized = true;
+        f
+    }
+
+    /// The attitude estimate: sensor to earth (ENU), a unit quaternion.
+    ///
+    /// ```
+    /// use rigtform::attitude::{FilterParams, OrientationFilter};
+    /// use rigtform::Quat;
+    /// let f = OrientationFilter::new(FilterParams::DEFAULT);
+    /// assert_eq!(f.attitude(), Quat::IDENTITY);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn attitude(&self) -> Quat {
+        self.correction * self.strapdown
+    }
+
+    /// The gyro bias estimate in rad/s, in the sensor frame: subtracted
+    /// from every gyro sample.
+    ///
+    /// ```
+    /// use rigtform::attitude::{FilterParams, OrientationFilter};
+    /// use rigtform::Cvec3;
+    /// assert_eq!(OrientationFilter::new(FilterParams::DEFAULT).bias(), Cvec3::ZERO);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn bias(&self) -> Cvec3 {
+        self.bias
+    }
+
+    /// Sets the gyro bias estimate (rad/s, sensor frame), for instance from
+    /// a calibration stored at the previous shutdown.
+    ///
+    /// ```
+    /// use rigtform::attitude::{FilterParams, OrientationFilter};
+    /// use rigtform::Cvec3;
+    /// let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    /// f.set_bias(Cvec3::new(0.01, 0.0, 0.0));
+    /// assert_eq!(f.bias().x, 0.01);
+    /// ```
+    #[inline]
+    pub fn set_bias(&mut self, bias: Cvec3) {
+        self.bias = bias;
+    }
+
+    /// `true` while the rest detector sees the sensor at rest (and the
+    /// bias is learned from the raw gyro).
+    ///
+    /// ```
+    /// use rigtform::attitude::{FilterParams, OrientationFilter};
+    /// use rigtform::Cvec3;
+    /// let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    /// let g = Cvec3::new(0.0, 0.0, 9.81);
+    /// f.update(Cvec3::ZERO, g, 1.0);
+    /// assert!(!f.is_resting());
+    /// f.update(Cvec3::ZERO, g, 1.0);
+    /// assert!(f.is_resting()); // 2 s still, more than rest_time
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn is_resting(&self) -> bool {
+        self.rest.time >= self.params.rest_time
+    }
+
+    /// One 6D update: gyro `gyr` (rad/s, sensor frame), accelerometer `acc`
+    /// (specific force in the unit of `params.gravity`, sensor frame),
+    /// `dt` seconds since the previous sample. Returns the new attitude.
+    /// See the type's docs for the method and for bad input.
+    ///
+    /// In 6D the heading is the integrated gyro alone: it drifts with the
+    /// part of the bias that points up, which the accelerometer cannot see.
+    ///
+    /// ```
+    /// use rigtform::attitude::{FilterParams, OrientationFilter};
+    /// use rigtform::{Cvec3, Quat};
+    /// let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    /// let g = Cvec3::new(0.0, 0.0, 9.81);
+    /// f.update(Cvec3::ZERO, g, 0.01);
+    /// // Turning about the vertical at 1 rad/s for a second:
+    /// for _ in 0..100 {
+    ///     f.update(Cvec3::new(0.0, 0.0, 1.0), g, 0.01);
+    /// }
+    /// assert!(f.attitude().angle_to(Quat::from_rotation_z(1.0)) < 1e-4);
+    /// assert!(!f.update(Cvec3::NAN, g, 0.01).is_finite()); // reported,
+    /// assert!(f.attitude().is_finite()); // and ignored
+    /// ```
+    pub fn update(&mut self, gyr: Cvec3, acc: Cvec3, dt: f32) -> Quat {
+        self.update_with_optional_mag(gyr, acc, None, dt)
+    }
+
+    /// One 9D update: as [`update`](Self::update), plus the magnetometer
+    /// `mag` (any unit, sensor frame), used for the heading only.
+    ///
+    /// ```
+    /// use rigtform::attitude::{FilterParams, OrientationFilter};
+    /// use rigtform::{Cvec3, Quat};
+    /// // Level, facing 0.5 rad west of magnetic north: the field is seen
+    /// // turned the other way in the sensor frame.
+    /// let truth = Quat::from_rotation_z(0.5);
+    /// let field = Cvec3::new(0.0, 16.0, -41.0); // µT in ENU, Berlin
+    /// let (acc, mag) = (Cvec3::new(0.0, 0.0, 9.81), truth.inv() * field);
+    /// let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    /// let q = f.update_with_mag(Cvec3::ZERO, acc, mag, 0.01);
+    /// assert!(q.angle_to(truth) < 1e-5);
+    /// ```
+    pub fn update_with_mag(&mut self, gyr: Cvec3, acc: Cvec3, mag: Cvec3, dt: f32) -> Quat {
+        self.update_with_optional_mag(gyr, acc, Some(mag), dt)
+    }
+
+    fn update_with_optional_mag(
+        &mut self,
+        gyr: Cvec3,
+        acc: Cvec3,
+        mag: Option<Cvec3>,
+        dt: f32,
+    ) -> Quat {
+        if !(gyr.is_finite() && dt.is_finite()) {
+            return Quat::NAN;
+        }
+        if dt <= 0.0 {
+            return self.attitude();
+        }
+        let p = self.params;
+        let acc = acc.is_finite().then_some(acc).filter(|a| *a != Cvec3::ZERO);
+        if let Some(acc) = acc {
+            self.detect_rest(gyr, acc, dt);
+        } else {
+            self.rest.time = 0.0;
+        }
+        let resting = self.is_resting();
+        if resting {
+            let mut bias = LowPass3::new(self.bias);
+            self.set_clipped_bias(bias.update(gyr, smoothing_factor(dt, p.tau_bias_rest)));
+        }
+
+        self.strapdown = self.strapdown.integrate(gyr - self.bias, dt);
+
+        // Corrections in the earth frame, as rotation vectors, for the bias.
+        let mut drift = Cvec3::ZERO;
+        if let Some(acc) = acc {
+            drift += self.correct_inclination(acc, dt);
+        }
+        if let Some(mag) = mag.filter(|m| m.is_finite() && *m != Cvec3::ZERO) {
+            drift += self.correct_heading(mag, dt);
+        }
+
+        let attitude = self.attitude();
+        let gated = acc.is_some_and(|a| (a.norm() - p.gravity).abs() <= p.acc_gate * p.gravity);
+        // The corrections undid a drift of -drift in dt: in the sensor
+        // frame, the bias error that would cause it. Faster corrections are
+        // no bias (see max_bias).
+        let error = attitude.inv() * drift * (1.0 / dt);
+        if !resting && gated && error.norm() <= p.max_bias {
+            self.set_clipped_bias(self.bias - error * smoothing_factor(dt, p.tau_bias));
+        }
+        attitude
+    }
+
+    /// Sets the bias, scaled down to at most `max_bias` long.
+    fn set_clipped_bias(&mut self, bias: Cvec3) {
+        let (length, max) = (bias.norm(), self.params.max_bias);
+        self.bias = if length > max {
+            bias * (max / length)
+        } else {
+            bias
+        };
+    }
+
+    /// Updates the rest detector with one sample.
+    fn detect_rest(&mut self, gyr: Cvec3, acc: Cvec3, dt: f32) {
+        let p = self.params;
+        if !self.rest.acc.is_finite() {
+            self.rest.gyro = gyr;
+            self.rest.acc = acc;
+        }
+        let alpha = smoothing_factor(dt, REST_LOW_PASS_TAU);
+        let gyro = LowPass3::new(self.rest.gyro).update(gyr, alpha);
+        let acc_lp = LowPass3::new(self.rest.acc).update(acc, alpha);
+        let still = (gyr - gyro).norm() <= p.rest_gyro
+            && gyro.norm() <= p.max_bias
+            && (acc - acc_lp).norm() <= p.rest_acc * p.gravity;
+        self.rest = Rest {
+            gyro,
+            acc: acc_lp,
+            time: if still { self.rest.time + dt } else { 0.0 },
+        };
+    }
+
+    /// Averages the accelerometer in the inertial frame and turns the
+    /// correction so that the average points up. Returns the correction's
+    /// rotation vector (earth frame).
+    fn correct_inclination(&mut self, acc: Cvec3, dt: f32) -> Cvec3 {
+        let p = self.params;
+        let inertial = self.strapdown * acc;
+        let first = !self.initialized;
+        if first {
+            self.acc_stage1 = inertial;
+            self.acc_stage2 = inertial;
+            self.initialized = true;
+        }
+        let alpha = smoothing_factor(dt, 0.5 * p.tau_acc);
+        let stage1 = LowPass3::new(self.acc_stage1).update(inertial, alpha);
+        let stage2 = LowPass3::new(self.acc_stage2).update(stage1, alpha);
+        self.acc_stage1 = stage1;
+        self.acc_stage2 = stage2;
+        if (stage2.norm() - p.gravity).abs() > p.acc_gate * p.gravity {
+            return Cvec3::ZERO;
+        }
+        let Some(up) = (self.correction * stage2).try_normalize() else {
+            return Cvec3::ZERO;
+        };
+        let turn = rotation_to_up(up);
+        self.correction = (turn * self.correction).normalize();
+        // Setting the inclination from the first sample is no drift.
+        if first {
+            Cvec3::ZERO
+        } else {
+            turn.to_scaled_axis()
+        }
+    }
+
+    /// Turns the correction about the vertical towards magnetic north, if
+    /// the field passes the disturbance gate. Returns the correction's
+    /// rotation vector (earth frame).
+    fn correct_heading(&mut self, mag: Cvec3, dt: f32) -> Cvec3 {
+        let p = self.params;
+        let field = self.attitude() * mag;
+        let horizontal = float::sqrt(field.x * field.x + field.y * field.y);
+        if !(horizontal > 0.0) {
+            return Cvec3::ZERO;
+        }
+        let seen = Cvec3::new(horizontal, field.z, 0.0);
+        let first = !self.mag_reference.is_finite();
+        if first {
+            self.mag_reference = seen;
+        }
+        let reference = self.mag_reference;
+        let mut follow = LowPass3::new(reference);
+        self.mag_reference = follow.update(seen, smoothing_factor(dt, MAG_REFERENCE_TAU));
+        if !first && (seen - reference).norm() > p.mag_gate * reference.norm() {
+            return Cvec3::ZERO;
+        }
+        // The field's angle east of north; turning by it about +z brings
+        // it to north.
+        let error = float::atan2(field.x, field.y);
+        let fraction = if first {
+            1.0
+        } else {
+            smoothing_factor(dt, p.tau_mag)
+        };
+        let turn = Cvec3::new(0.0, 0.0, error * fraction);
+        self.correction = (Quat::from_scaled_axis(turn) * self.correction).normalize();
+        // Setting the heading from the first field is no drift.
+        if first {
+            Cvec3::ZERO
+        } else {
+            turn
+        }
+    }
+}
+
+/// The smallest rotation that takes the unit vector `u` to +z: about the
+/// axis `u x z`, by the angle between them; `[1 + u.z, u x z]` normalized
+/// (the half-way vector construction). For `u = -z` exactly, a half turn
+/// about x.
+fn rotation_to_up(u: Cvec3) -> Quat {
+    Quat::new(1.0 + u.z, u.y, -u.x, 0.0)
+        .try_normalize()
+        .unwrap_or(Quat::new(0.0, 1.0, 0.0, 0.0))
+}
