@@ -1,0 +1,261 @@
+//! Runs `rigtform`'s orientation filter on real IMU recordings and scores
+//! it with the BROAD benchmark's metric, beside the published figures of
+//! Madgwick, Mahony and VQF on the same trials; writes a plot of the error
+//! over time.
+//!
+//! ```sh
+//! cargo run --release --example broad -- ../shared/data/imu/broad_*.csv \
+//!     ../shared/data/imu/xio_fusion_sensor_data.csv --plot docs/imu_errors.png
+//! ```
+//!
+//! Accepts BROAD trials (as CSV, or gzipped like the one in `tests/data/`)
+//! and x-io's Fusion sample log (no ground truth: a summary only). The data
+//! and its origin are described in the README's IMU section.
+
+mod data;
+mod metric;
+mod plot;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::Parser;
+use rigtform::attitude::{FilterParams, OrientationFilter};
+use rigtform::{Cvec3, Quat};
+
+use data::{BroadSample, FusionSample, Recording};
+use metric::{Rmse, Run};
+
+/// Evaluate rigtform's orientation filter on BROAD trials and x-io's Fusion log.
+#[derive(Parser)]
+struct Args {
+    /// Recordings: BROAD trial CSVs (plain or .gz) and x-io Fusion logs.
+    #[arg(required = true)]
+    csv: Vec<PathBuf>,
+    /// Where to write the PNG plot of the error over time (BROAD trials).
+    #[arg(long)]
+    plot: Option<PathBuf>,
+}
+
+/// Published RMSEs in degrees on a BROAD trial: Madgwick and Mahony with
+/// the one parameter set best over all 39 trials (TAGP; inclination,
+/// total), from the BROAD authors' `results_*_average_rmse.json`; VQF's 6D
+/// inclination from the VQF paper (Laidig and Seel, Information Fusion
+/// 2023).
+struct Published {
+    trial: &'static str,
+    madgwick: (f64, f64),
+    mahony: (f64, f64),
+    vqf_inclination: f64,
+}
+
+const PUBLISHED: [Published; 3] = [
+    Published {
+        trial: "02",
+        madgwick: (0.80, 1.50),
+        mahony: (0.66, 2.97),
+        vqf_inclination: 0.43,
+    },
+    Published {
+        trial: "07",
+        madgwick: (2.50, 5.00),
+        mahony: (1.84, 5.23),
+        vqf_inclination: 1.02,
+    },
+    Published {
+        trial: "16",
+        madgwick: (3.09, 4.82),
+        mahony: (10.01, 20.28),
+        vqf_inclination: 0.54,
+    },
+];
+
+/// One evaluated BROAD trial.
+pub struct Trial {
+    pub name: String,
+    pub samples: Vec<BroadSample>,
+    pub six: Run,
+    pub nine: Run,
+}
+
+fn main() -> ExitCode {
+    let args = Args::parse();
+    match evaluate(&args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn evaluate(args: &Args) -> Result<(), String> {
+    // Read everything first, so that a bad file stops the run before any output.
+    let mut trials = Vec::new();
+    let mut fusion = Vec::new();
+    for path in &args.csv {
+        let name = path
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_else(|| path.display().to_string());
+        match data::read(path)? {
+            Recording::Broad(samples) if samples.is_empty() => {
+                return Err(format!("{}: no samples", path.display()))
+            }
+            Recording::Broad(samples) => trials.push((name, samples)),
+            Recording::Fusion(samples) if samples.len() < 2 => {
+                return Err(format!("{}: fewer than two samples", path.display()))
+            }
+            Recording::Fusion(samples) => fusion.push((name, samples)),
+        }
+    }
+    let params = FilterParams::DEFAULT;
+    let trials: Vec<Trial> = trials
+        .into_iter()
+        .map(|(name, samples)| Trial {
+            six: metric::run(&samples, params, false),
+            nine: metric::run(&samples, params, true),
+            name,
+            samples,
+        })
+        .collect();
+    if !trials.is_empty() {
+        print_table(&trials);
+    }
+    for (name, samples) in &fusion {
+        print_fusion_summary(name, samples);
+    }
+    if let Some(path) = &args.plot {
+        if trials.is_empty() {
+            return Err("--plot needs at least one BROAD trial".into());
+        }
+        plot::write(path, &trials)?;
+        println!("\nplot written to {}", path.display());
+    }
+    Ok(())
+}
+
+/// The two digits after `broad_` in a file name: the BROAD trial number.
+fn trial_number(name: &str) -> Option<&str> {
+    let rest = &name[name.find("broad_")? + 6..];
+    rest.get(..2)
+        .filter(|n| n.bytes().all(|b| b.is_ascii_digit()))
+}
+
+fn print_table(trials: &[Trial]) {
+    println!("BROAD trials: RMSE in degrees over the movement phase, FilterParams::DEFAULT for every trial.");
+    println!("Madgwick and Mahony: the BROAD authors' 9D runs with the one parameter set best over all 39 trials (TAGP).");
+    println!("VQF: 6D inclination as published.\n");
+    println!("| trial | ours 6D incl. | ours 9D incl. | ours 9D heading | ours 9D total | Madgwick incl. / total | Mahony incl. / total | VQF 6D incl. |");
+    println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
+    let mut verdicts = Vec::new();
+    for t in trials {
+        let (six, nine) = (t.six.rmse, t.nine.rmse);
+        let published = trial_number(&t.name).and_then(|n| PUBLISHED.iter().find(|p| p.trial == n));
+        let (madgwick, mahony, vqf) = match published {
+            Some(p) => (
+                format!("{:.2} / {:.2}", p.madgwick.0, p.madgwick.1),
+                format!("{:.2} / {:.2}", p.mahony.0, p.mahony.1),
+                format!("{:.2}", p.vqf_inclination),
+            ),
+            None => ("-".into(), "-".into(), "-".into()),
+        };
+        println!(
+            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {madgwick} | {mahony} | {vqf} |",
+            t.name, six.inclination, nine.inclination, nine.heading, nine.total
+        );
+        if let Some(p) = published {
+            verdicts.push((t.name.as_str(), p, six, nine));
+        }
+        let nan = t
+            .six
+            .estimates
+            .iter()
+            .chain(&t.nine.estimates)
+            .filter(|q| !q.is_finite())
+            .count();
+        if nan > 0 {
+            println!("  ({nan} non-finite estimates in {})", t.name);
+        }
+    }
+    if verdicts.is_empty() {
+        return;
+    }
+    println!("\nTargets (issue 6):");
+    for (name, p, six, nine) in verdicts {
+        let best_incl = p.madgwick.0.min(p.mahony.0);
+        let check = |ok: bool| if ok { "met" } else { "MISSED" };
+        println!(
+            "  {name}: 6D and 9D inclination below Madgwick and Mahony ({best_incl:.2}): {}; 9D total below Madgwick ({:.2}): {}; 6D inclination / VQF: {:.2}x",
+            check(six.inclination < best_incl && nine.inclination < best_incl),
+            p.madgwick.1,
+            check(nine.total < p.madgwick.1),
+            six.inclination / p.vqf_inclination,
+        );
+    }
+    for t in trials {
+        let Rmse { samples, .. } = t.six.rmse;
+        println!(
+            "  {}: {} samples, {samples} scored",
+            t.name,
+            t.samples.len()
+        );
+    }
+}
+
+/// Roll, pitch and yaw (z-y-x Euler angles) of `q`, in degrees.
+fn euler_degrees(q: Quat) -> [f64; 3] {
+    let [w, x, y, z] = [q.w, q.x, q.y, q.z].map(f64::from);
+    let roll = (2.0 * (w * x + y * z)).atan2(1.0 - 2.0 * (x * x + y * y));
+    let pitch = (2.0 * (w * y - z * x)).clamp(-1.0, 1.0).asin();
+    let yaw = (2.0 * (w * z + x * y)).atan2(1.0 - 2.0 * (y * y + z * z));
+    [roll, pitch, yaw].map(f64::to_degrees)
+}
+
+fn print_fusion_summary(name: &str, samples: &[FusionSample]) {
+    // The log is in deg/s and g: gravity is 1 in the accelerometer's unit.
+    let params = FilterParams {
+        gravity: 1.0,
+        ..FilterParams::DEFAULT
+    };
+    let mut six = OrientationFilter::new(params);
+    let mut nine = OrientationFilter::new(params);
+    let (mut non_finite, mut resting, mut max_tilt) = (0usize, 0usize, 0.0f64);
+    let (mut dt_min, mut dt_max) = (f64::INFINITY, 0.0f64);
+    let mut previous = samples[0].time - (samples[1].time - samples[0].time);
+    for s in samples {
+        let dt = s.time - previous;
+        previous = s.time;
+        dt_min = dt_min.min(dt);
+        dt_max = dt_max.max(dt);
+        let gyr = s.gyr_deg * core::f32::consts::PI / 180.0;
+        let q6 = six.update(gyr, s.acc_g, dt as f32);
+        let q9 = nine.update_with_mag(gyr, s.acc_g, s.mag, dt as f32);
+        non_finite += usize::from(!q6.is_finite()) + usize::from(!q9.is_finite());
+        resting += usize::from(nine.is_resting());
+        let up = q9.inv() * Cvec3::Z; // earth's up in the sensor frame
+        max_tilt = max_tilt.max(f64::from(up.z.clamp(-1.0, 1.0)).acos().to_degrees());
+    }
+    let duration = samples[samples.len() - 1].time - samples[0].time;
+    let [roll, pitch, yaw] = euler_degrees(nine.attitude());
+    let [roll6, pitch6, yaw6] = euler_degrees(six.attitude());
+    let bias = nine.bias() * 180.0 / core::f32::consts::PI;
+    println!("\n{name}: x-io Fusion sample log, no ground truth");
+    println!(
+        "  {} samples over {duration:.1} s, dt from {:.1} to {:.1} ms",
+        samples.len(),
+        dt_min * 1e3,
+        dt_max * 1e3
+    );
+    println!("  non-finite estimates: {non_finite} (6D and 9D together)");
+    println!(
+        "  at rest: {:.1} % of samples",
+        100.0 * resting as f64 / samples.len() as f64
+    );
+    println!("  largest tilt from level (9D): {max_tilt:.1} deg");
+    println!("  final attitude, roll / pitch / yaw (ENU, deg): 9D {roll:.1} / {pitch:.1} / {yaw:.1}, 6D {roll6:.1} / {pitch6:.1} / {yaw6:.1}");
+    println!(
+        "  final gyro bias estimate (9D): [{:.3}, {:.3}, {:.3}] deg/s",
+        bias.x, bias.y, bias.z
+    );
+}

@@ -1,0 +1,139 @@
+//! The error-over-time plot of the `broad` example: one panel per BROAD
+//! trial, 6D inclination error and 9D total error in degrees.
+
+use std::path::Path;
+
+use plotters::prelude::*;
+
+use crate::metric::sample_error;
+use crate::Trial;
+
+/// Where the example looks for a font for the plot's labels (the plot is
+/// drawn without text if none is found): `RIGTFORM_FONT`, else DejaVu Sans
+/// where Debian and Ubuntu install it.
+const FONT_PATHS: [&str; 2] = [
+    "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+    "/usr/share/fonts/TTF/DejaVuSans.ttf",
+];
+
+fn register_font() -> bool {
+    let from_env = std::env::var("RIGTFORM_FONT").ok();
+    for path in from_env.iter().map(String::as_str).chain(FONT_PATHS) {
+        if let Ok(bytes) = std::fs::read(path) {
+            let bytes: &'static [u8] = Box::leak(bytes.into_boxed_slice());
+            if plotters::style::register_font("sans-serif", FontStyle::Normal, bytes).is_ok() {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// Samples per plotted point: the largest error of each run of this many
+/// samples, so that peaks survive.
+const BUCKET: usize = 20;
+
+/// Writes the plot to `path` (PNG): to a temporary file first, renamed at
+/// the end, so that no half-written plot is left behind.
+pub fn write(path: &Path, trials: &[Trial]) -> Result<(), String> {
+    let labels = register_font();
+    if !labels {
+        eprintln!("note: no font found (set RIGTFORM_FONT to a .ttf file); the plot has no labels");
+    }
+    let temporary = path.with_extension("partial.png");
+    draw(&temporary, trials, labels).map_err(|e| {
+        let _ = std::fs::remove_file(&temporary);
+        format!("{}: {e}", path.display())
+    })?;
+    std::fs::rename(&temporary, path).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Per bucket of samples: time (s), largest 6D inclination error and
+/// largest 9D total error (degrees), over the samples with ground truth.
+fn series(t: &Trial) -> Vec<(f64, f64, f64)> {
+    let dt = f64::from(crate::data::BROAD_DT);
+    let mut points = Vec::new();
+    for (k, chunk) in t.samples.chunks(BUCKET).enumerate() {
+        let mut worst: Option<(f64, f64)> = None;
+        for (i, s) in chunk.iter().enumerate() {
+            if s.truth.iter().any(|c| c.is_nan()) {
+                continue;
+            }
+            let j = k * BUCKET + i;
+            let six = sample_error(t.six.estimates[j], s.truth).inclination;
+            let nine = sample_error(t.nine.estimates[j], s.truth).total;
+            let (a, b) = worst.unwrap_or((0.0, 0.0));
+            worst = Some((a.max(six), b.max(nine)));
+        }
+        if let Some((six, nine)) = worst {
+            points.push(((k * BUCKET) as f64 * dt, six, nine));
+        }
+    }
+    points
+}
+
+fn draw(path: &Path, trials: &[Trial], labels: bool) -> Result<(), Box<dyn std::error::Error>> {
+    let root = BitMapBackend::new(path, (960, 260 * trials.len() as u32)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let six_colour = RGBColor(31, 119, 180);
+    let nine_colour = RGBColor(214, 39, 40);
+    for (panel, t) in root.split_evenly((trials.len(), 1)).iter().zip(trials) {
+        let points = series(t);
+        let end = points.last().map_or(1.0, |p| p.0);
+        // Up to the 99.5th percentile of both curves, so one spike does not flatten the rest.
+        let mut values: Vec<f64> = points.iter().flat_map(|p| [p.1, p.2]).collect();
+        values.sort_by(f64::total_cmp);
+        let top = values
+            .get(values.len() * 995 / 1000)
+            .copied()
+            .unwrap_or(1.0)
+            .max(1.0)
+            * 1.2;
+        let mut builder = ChartBuilder::on(panel);
+        builder.margin(8);
+        if labels {
+            builder
+                .caption(
+                    format!("{}: error over time (deg)", t.name),
+                    ("sans-serif", 18),
+                )
+                .x_label_area_size(30)
+                .y_label_area_size(40);
+        }
+        let mut chart = builder.build_cartesian_2d(0.0..end, 0.0..top)?;
+        let mut mesh = chart.configure_mesh();
+        mesh.light_line_style(WHITE.mix(0.0));
+        if labels {
+            mesh.x_desc("time (s)");
+        } else {
+            mesh.x_labels(0).y_labels(0);
+        }
+        mesh.draw()?;
+        let clip = |v: f64| v.min(top);
+        let curves = [
+            ("6D inclination", six_colour, 1),
+            ("9D total", nine_colour, 2),
+        ];
+        for (name, colour, column) in curves {
+            let line = points
+                .iter()
+                .map(|p| (p.0, clip(if column == 1 { p.1 } else { p.2 })));
+            let series = chart.draw_series(LineSeries::new(line, colour))?;
+            if labels {
+                series
+                    .label(name)
+                    .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], colour));
+            }
+        }
+        if labels {
+            chart
+                .configure_series_labels()
+                .background_style(WHITE.mix(0.8))
+                .border_style(BLACK)
+                .position(SeriesLabelPosition::UpperRight)
+                .draw()?;
+        }
+    }
+    root.present()?;
+    Ok(())
+}
