@@ -12,7 +12,8 @@
 //!   call the same laws.
 //!
 //! [`edge`] holds the edge values all of them start from and [`draw`] the
-//! seeded generator the stand-in and the on-target tests share.
+//! seeded generator the stand-in and the on-target tests share, [`reference`]
+//! the notes' formulas in `f64` for the on-target accuracy checks.
 //! [`contracts`] states what the stubbed float kernels promise.
 //!
 //! Nothing here is proven unless `cargo kani` ran it: Kani is not
@@ -28,6 +29,7 @@ pub mod contracts;
 pub mod draw;
 pub mod edge;
 pub mod laws;
+pub mod reference;
 
 #[cfg(any(kani, test))]
 mod harnesses;
