@@ -168,6 +168,14 @@ pub fn slerp_is_unit(a: Quat, b: Quat, alpha: f32) -> Verdict {
     within("slerp_is_unit", (norm2(r) - 1.0).abs(), TWO_STEP_NORM_TOL)
 }
 
+/// NaN or infinity in, NaN out: `slerp` with a non-finite input or
+/// exponent is [`Quat::NAN`] (the NaN of `pow` spreads through the product).
+///
+/// Preconditions: `a`, `b` or `alpha` not finite.
+pub fn slerp_of_non_finite_is_nan(a: Quat, b: Quat, alpha: f32) -> Verdict {
+    holds("slerp_of_non_finite_is_nan", is_nan_quat(a.slerp(b, alpha)))
+}
+
 /// `slerp(a, b, 0) == a`, exactly (up to the sign of zero components).
 ///
 /// Preconditions: `a` and `b` finite, components at most 2^60 in magnitude
@@ -383,6 +391,8 @@ mod tests {
         assert_eq!(normalize_is_unit(Quat::new(1e-40, 3e-41, 0.0, 0.0)), Ok(()));
         assert_eq!(pow_is_unit(Quat::new(-1.0, 0.0, 0.0, 0.0), 0.3), Ok(()));
         assert_eq!(pow_of_non_finite_is_nan(a, f32::NAN), Ok(()));
+        assert_eq!(slerp_of_non_finite_is_nan(a, Quat::NAN, 0.5), Ok(()));
+        assert_eq!(slerp_of_non_finite_is_nan(a, b, f32::INFINITY), Ok(()));
         assert_eq!(slerp_is_unit(a, -a, 0.5), Ok(()));
         assert_eq!(slerp_is_exact_at_zero(a, b), Ok(()));
         assert_eq!(slerp_turns_by_alpha_times_the_angle(a, b, 0.25), Ok(()));
@@ -412,6 +422,7 @@ mod tests {
         assert!(normalize_is_unit(Quat::new(0.0, 0.0, 0.0, 0.0)).is_err());
         assert!(pow_is_unit(Quat::NAN, 0.5).is_err());
         assert!(pow_of_non_finite_is_nan(a, 0.5).is_err());
+        assert!(slerp_of_non_finite_is_nan(a, a, 0.5).is_err());
         assert!(slerp_is_unit(scaled, a, 0.5).is_err());
         assert!(slerp_turns_by_alpha_times_the_angle(a, -a.inv(), 3.0).is_err());
         assert!(nlerp_is_unit(Quat::NAN, a, 0.5).is_err());

@@ -28,9 +28,11 @@ impl From<Quat> for Quat64 {
     }
 }
 
-impl Quat64 {
-    /// The Hamilton product `self * o`.
-    pub fn mul(self, o: Self) -> Self {
+/// The Hamilton product.
+impl core::ops::Mul for Quat64 {
+    type Output = Self;
+
+    fn mul(self, o: Self) -> Self {
         Self {
             w: self.w * o.w - self.x * o.x - self.y * o.y - self.z * o.z,
             x: self.w * o.x + self.x * o.w + self.y * o.z - self.z * o.y,
@@ -38,7 +40,9 @@ impl Quat64 {
             z: self.w * o.z + self.x * o.y - self.y * o.x + self.z * o.w,
         }
     }
+}
 
+impl Quat64 {
     /// The conjugate (the inverse of a unit quaternion).
     pub fn conj(self) -> Self {
         Self {
@@ -59,10 +63,17 @@ impl Quat64 {
     pub fn pow(self, alpha: f64) -> Self {
         let beta = self.vector_norm();
         let (k, phi) = if beta == 0.0 {
-            let phi = if self.w < 0.0 { core::f64::consts::PI } else { 0.0 };
+            let phi = if self.w < 0.0 {
+                core::f64::consts::PI
+            } else {
+                0.0
+            };
             ([1.0, 0.0, 0.0], phi)
         } else {
-            ([self.x / beta, self.y / beta, self.z / beta], libm::atan2(beta, self.w))
+            (
+                [self.x / beta, self.y / beta, self.z / beta],
+                libm::atan2(beta, self.w),
+            )
         };
         let (s, c) = (libm::sin(alpha * phi), libm::cos(alpha * phi));
         Self {
@@ -75,7 +86,7 @@ impl Quat64 {
 
     /// `pow(cn(b a^-1), alpha) a`.
     pub fn slerp(a: Self, b: Self, alpha: f64) -> Self {
-        let mut d = b.mul(a.conj());
+        let mut d = b * a.conj();
         if d.w < 0.0 {
             d = Self {
                 w: -d.w,
@@ -84,13 +95,13 @@ impl Quat64 {
                 z: -d.z,
             };
         }
-        d.pow(alpha).mul(a)
+        d.pow(alpha) * a
     }
 
     /// The angle of the rotation between two unit quaternions, up to sign:
     /// `2 atan2(|v|, |w|)` of `b^-1 a` (accurate near 0 and near pi).
     pub fn angle_between(a: Self, b: Self) -> f64 {
-        let d = b.conj().mul(a);
+        let d = b.conj() * a;
         2.0 * libm::atan2(d.vector_norm(), libm::fabs(d.w))
     }
 }

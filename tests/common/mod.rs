@@ -7,39 +7,10 @@ use nalgebra as na;
 use proptest::prelude::*;
 use rigtform::{Cvec3, Quat, RigTForm};
 
-/// libm-style edge values: walking out from 0, +-1, subnormals, the largest
-/// finite value, infinities and NaN.
-pub const EDGE_F32: [f32; 24] = [
-    0.0,
-    -0.0,
-    1e-45, // smallest subnormal
-    -1e-45,
-    1e-40, // subnormal
-    f32::MIN_POSITIVE,
-    1e-30,
-    1e-7,
-    -1e-7,
-    0.5,
-    1.0,
-    -1.0,
-    0.999_999_9, // 1 - ulp
-    1.000_000_1, // 1 + ulp
-    2.0,
-    -3.5,
-    1e7,
-    1e30,
-    -1e30,
-    f32::MAX,
-    -f32::MAX,
-    f32::INFINITY,
-    f32::NEG_INFINITY,
-    f32::NAN,
-];
-
-/// The finite entries of [`EDGE_F32`].
-pub fn finite_edges() -> impl Iterator<Item = f32> {
-    EDGE_F32.into_iter().filter(|x| x.is_finite())
-}
+/// The edge values (zeros, subnormals, +-1, 1 +- ulp, 1e30, `f32::MAX`,
+/// infinities, NaN) that the proofs, fuzz seeds and on-target tests share.
+#[allow(unused_imports)] // each test file uses a different part
+pub use rigtform_proofs::edge::{edge_quats, finite_edges, EDGE_F32};
 
 /// A point drawn uniformly in the 4-cube, kept if it lies in the unit ball
 /// (away from the origin) and projected onto the sphere: rejection sampling

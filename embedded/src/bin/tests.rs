@@ -94,7 +94,7 @@ fn measure_accuracy() -> Accuracy {
             .max(Quat64::angle_between(s.into(), s64) / turn(theta));
 
         for q in [p, s, a * b] {
-            let n = libm::sqrt(Quat64::from(q).mul(Quat64::from(q).conj()).w);
+            let n = libm::sqrt((Quat64::from(q) * Quat64::from(q).conj()).w);
             worst.norm = worst.norm.max(libm::fabs(n - 1.0));
         }
     }
@@ -126,7 +126,9 @@ fn main() -> ! {
     );
 
     t.check("product_norm_is_multiplicative", || {
-        each(unit_pairs(1), |(a, b)| laws::product_norm_is_multiplicative(a, b))
+        each(unit_pairs(1), |(a, b)| {
+            laws::product_norm_is_multiplicative(a, b)
+        })
     });
     t.check("rotation_preserves_length", || {
         let mut d = Draws::new(2);
@@ -191,21 +193,30 @@ fn main() -> ! {
         let mut d = Draws::new(13);
         each(unit_pairs(14), |(a, b)| {
             let c = d.unit_quat();
-            let w = [d.uniform(-1.0, 2.0), d.uniform(0.0, 1.0), d.uniform(-3.0, 3.0)];
+            let w = [
+                d.uniform(-1.0, 2.0),
+                d.uniform(0.0, 1.0),
+                d.uniform(-3.0, 3.0),
+            ];
             laws::blend_is_unit_or_identity(&[(a, w[0]), (b, w[1]), (c, w[2])])
         })
     });
     t.check("inverse_is_an_involution (edge grid)", || {
         each(some_edge_quats(), laws::inverse_is_an_involution)
     });
-    t.check("cn_gives_non_negative_w_and_the_same_rotation (edge grid)", || {
-        each(
-            some_edge_quats(),
-            laws::cn_gives_non_negative_w_and_the_same_rotation,
-        )
-    });
+    t.check(
+        "cn_gives_non_negative_w_and_the_same_rotation (edge grid)",
+        || {
+            each(
+                some_edge_quats(),
+                laws::cn_gives_non_negative_w_and_the_same_rotation,
+            )
+        },
+    );
     t.check("product_with_inverse_is_real", || {
-        each(unit_pairs(15), |(a, _)| laws::product_with_inverse_is_real(a))
+        each(unit_pairs(15), |(a, _)| {
+            laws::product_with_inverse_is_real(a)
+        })
     });
     t.check("rigid_product_with_inverse_is_identity", || {
         each(rig_tforms(16), laws::rigid_product_with_inverse_is_identity)
@@ -230,15 +241,23 @@ fn main() -> ! {
             laws::interpolate_is_exact_at_zero(a, b.next().unwrap_or(RigTForm::IDENTITY))
         })
     });
-    t.check("matrix_inverse_is_none_or_finite (random bits and edges)", || {
-        let mut d = Draws::new(23);
-        each(0..DRAWS, |i| {
-            let m: [f32; 16] = core::array::from_fn(|_| d.f32_mixed());
-            let edge = EDGE_F32.get(i as usize % EDGE_F32.len()).copied().unwrap_or(0.0);
-            laws::matrix_inverse_is_none_or_finite(Matrix4::from_cols_array(&m))?;
-            laws::matrix_inverse_is_none_or_finite(Matrix4::from_scale(Cvec3::new(edge, 1.0, 2.0)))
-        })
-    });
+    t.check(
+        "matrix_inverse_is_none_or_finite (random bits and edges)",
+        || {
+            let mut d = Draws::new(23);
+            each(0..DRAWS, |i| {
+                let m: [f32; 16] = core::array::from_fn(|_| d.f32_mixed());
+                let edge = EDGE_F32
+                    .get(i as usize % EDGE_F32.len())
+                    .copied()
+                    .unwrap_or(0.0);
+                laws::matrix_inverse_is_none_or_finite(Matrix4::from_cols_array(&m))?;
+                laws::matrix_inverse_is_none_or_finite(Matrix4::from_scale(Cvec3::new(
+                    edge, 1.0, 2.0,
+                )))
+            })
+        },
+    );
 
     let accuracy = measure_accuracy();
     hprintln!(
