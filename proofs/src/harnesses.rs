@@ -3,7 +3,7 @@
 //! Under `cargo kani -p rigtform-proofs` (where Kani is installed) each
 //! harness is a proof over every input its assumptions allow. Everywhere
 //! else (`cargo test`), the same body runs as an ordinary test through the
-//! stand-in in `src/kani.rs`, on 20,000 random draws: that is testing, not
+//! stand-in in `src/kani.rs`, on 50,000 random draws: that is testing, not
 //! proof. Kani is not installable on the machines this crate is developed
 //! on, so none of these harnesses has been proven there; the proof times
 //! below are for whoever runs Kani ("not run yet" until someone does).
@@ -156,6 +156,23 @@ fn pow_of_non_finite_input_is_nan() {
         // Precondition: something is NaN or infinite.
         kani::assume(!(q.is_finite() && alpha.is_finite()));
         assert_law(laws::pow_of_non_finite_is_nan(q, alpha));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
+#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(not(kani), test)]
+fn slerp_of_non_finite_input_is_nan() {
+    check("slerp_of_non_finite_input_is_nan", || {
+        let a = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
+        let b = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
+        let alpha: f32 = kani::any();
+        // Precondition: something is NaN or infinite.
+        kani::assume(!(a.is_finite() && b.is_finite() && alpha.is_finite()));
+        assert_law(laws::slerp_of_non_finite_is_nan(a, b, alpha));
     });
 }
 

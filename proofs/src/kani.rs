@@ -4,7 +4,7 @@
 //! real crate takes this name.
 //!
 //! It is a random tester, not a model checker: each harness body runs
-//! [`draw_count`] times (20,000 by default; `RIGTFORM_PROOF_DRAWS` sets
+//! [`draw_count`] times (50,000 by default; `RIGTFORM_PROOF_DRAWS` sets
 //! it) on inputs drawn by [`Draws::f32_mixed`](crate::draw::Draws::f32_mixed)
 //! (edge values, moderate values and raw bit patterns). A draw that fails
 //! `assume` is thrown away and drawn again; `any_where` retries its own
@@ -77,7 +77,7 @@ pub fn draw_count() -> usize {
     std::env::var("RIGTFORM_PROOF_DRAWS")
         .ok()
         .and_then(|s| s.parse().ok())
-        .unwrap_or(20_000)
+        .unwrap_or(50_000)
 }
 
 fn base_seed() -> u64 {
