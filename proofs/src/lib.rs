@@ -4,7 +4,7 @@
 //! - [`laws`]: one function per law, taking inputs that meet its stated
 //!   preconditions and returning a [`laws::Verdict`];
 //! - Kani proof harnesses over them (`src/harnesses.rs`): proofs where
-//!   `cargo kani -p rigtform-proofs` runs, and 20,000 random draws each
+//!   `cargo kani -p rigtform-proofs` runs, and 50,000 random draws each
 //!   through a stand-in for `kani::any`/`kani::assume` where it does not
 //!   (`cargo test -p rigtform-proofs`);
 //! - the proptest properties of `rigtform`'s `tests/properties.rs`, the
