@@ -4,6 +4,8 @@
 
 #![no_std]
 
+pub mod attitude;
+
 use cortex_m_semihosting::{debug, hprintln};
 use rigtform_proofs::laws::Violation;
 

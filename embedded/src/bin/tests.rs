@@ -259,6 +259,8 @@ fn main() -> ! {
         },
     );
 
+    rigtform_embedded::attitude::check_all(&mut t, DRAWS);
+
     let accuracy = measure_accuracy();
     hprintln!(
         "accuracy on this core: pow {:.3e} rad per radian turned, slerp {:.3e}, |norm - 1| {:.3e} ({} draws)",

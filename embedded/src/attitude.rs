@@ -1,0 +1,117 @@
+//! The attitude module on target: the exponential map against `pow`, gyro
+//! integration, the smoother's time constant, and the orientation filter's
+//! update on synthetic samples (inclination, rest bias, heading, bad input).
+
+use rigtform::accuracy::{
+    ATAN2_MAX_ABS_ERROR, EXP_LOG_POW_MAX_ANGLE_ERROR, INTEGRATE_STEP_MAX_ANGLE_ERROR,
+    SMOOTHER_DECAY_MAX_ERROR,
+};
+use rigtform::attitude::{FilterParams, OrientationFilter, Smoother};
+use rigtform::{Cvec3, Quat};
+use rigtform_proofs::draw::Draws;
+use rigtform_proofs::laws::Violation;
+use rigtform_proofs::reference::Quat64;
+
+use crate::{each, Tally};
+
+/// `Ok(cases)` if `measured <= bound`, else the violation of `law`.
+fn within(law: &'static str, measured: f64, bound: f64, cases: u32) -> Result<u32, Violation> {
+    if measured <= bound {
+        Ok(cases)
+    } else {
+        Err(Violation {
+            law,
+            measured,
+            bound,
+        })
+    }
+}
+
+/// Runs the attitude checks.
+pub fn check_all(t: &mut Tally, draws: u32) {
+    t.check("exp_of_scaled_log_is_pow", || {
+        let mut d = Draws::new(61);
+        each(0..draws, |_| {
+            let q = d.unit_quat();
+            let a = d.uniform(-2.0, 3.0);
+            let got = Quat::from_scaled_axis(q.to_scaled_axis() * a);
+            let (_, theta) = q.to_axis_angle();
+            // pow turns the unreduced angle 2 atan2(|v|, w), up to 2 pi.
+            let turn = if q.w < 0.0 {
+                core::f32::consts::TAU - theta
+            } else {
+                theta
+            };
+            let error = Quat64::angle_between(got.into(), q.pow(a).into());
+            let bound = f64::from(EXP_LOG_POW_MAX_ANGLE_ERROR * (a * turn).abs().max(1.0));
+            within("exp_of_scaled_log_is_pow", error, bound, 1).map(|_| ())
+        })
+    });
+    t.check(
+        "integrating_a_constant_rate_is_the_axis_angle_rotation",
+        || {
+            // 25 rad/s about a skew axis at 2000/7 Hz for 2 s, as in BROAD trial 07.
+            let omega = Cvec3::new(15.0, -20.0, 0.0);
+            let (dt, steps) = (0.0035f32, 571u32);
+            let mut q = Quat::IDENTITY;
+            for _ in 0..steps {
+                q = q.integrate(omega, dt);
+            }
+            let want = Quat::from_axis_angle(omega, omega.norm() * dt * steps as f32);
+            let error = Quat64::angle_between(q.into(), want.into());
+            let bound = f64::from(INTEGRATE_STEP_MAX_ANGLE_ERROR) * f64::from(steps) + 1e-5;
+            within("integrate", error, bound, steps)
+        },
+    );
+    t.check("smoother_step_response_has_its_time_constant", || {
+        let target = Quat::from_rotation_x(1.0);
+        let mut s = Smoother::new(Quat::IDENTITY, 0.5);
+        for _ in 0..50 {
+            s.update(target, 0.01);
+        }
+        let left = f64::from(s.attitude.angle_to(target));
+        let error = libm::fabs(left - libm::exp(-1.0));
+        within("smoother decay", error, SMOOTHER_DECAY_MAX_ERROR.into(), 50)
+    });
+    t.check("filter_finds_inclination_and_rest_bias", || {
+        let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+        let tilt = Quat::from_rotation_x(0.3) * Quat::from_rotation_y(-0.2);
+        let acc = tilt.inv() * Cvec3::new(0.0, 0.0, 9.81);
+        let bias = Cvec3::new(0.01, -0.02, 0.005);
+        for _ in 0..2000 {
+            f.update(bias, acc, 0.01);
+        }
+        let up = f.attitude() * (acc * (1.0 / 9.81));
+        let error = (up - Cvec3::Z).norm().max((f.bias() - bias).norm());
+        within("filter at rest", error.into(), 1e-3, 2000)
+    });
+    t.check("filter_follows_gyro_and_magnetometer", || {
+        let truth = Quat::from_rotation_z(0.5);
+        let field = Cvec3::new(0.0, 16.0, -41.0);
+        let acc = Cvec3::new(0.0, 0.0, 9.81);
+        let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+        let first = f.update_with_mag(Cvec3::ZERO, acc, truth.inv() * field, 0.01);
+        // A second of turning about the vertical at 1 rad/s, then the field.
+        let mut g = OrientationFilter::new(FilterParams::DEFAULT);
+        g.update(Cvec3::ZERO, acc, 0.01);
+        for _ in 0..100 {
+            g.update(Cvec3::new(0.0, 0.0, 1.0), acc, 0.01);
+        }
+        let error = first
+            .angle_to(truth)
+            .max(g.attitude().angle_to(Quat::from_rotation_z(1.0)));
+        // The heading comes from one atan2: its error, or 1e-4 for libm.
+        let bound = ATAN2_MAX_ABS_ERROR.max(1e-4);
+        within("filter heading and turn", error.into(), bound.into(), 101)
+    });
+    t.check("filter_reports_and_ignores_bad_samples", || {
+        let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+        let acc = Cvec3::new(0.0, 3.0, 9.0);
+        f.update(Cvec3::new(0.1, 0.0, 0.0), acc, 0.01);
+        let before = f.attitude();
+        let nan = f.update(Cvec3::NAN, acc, 0.01);
+        let bad_dt = f.update(Cvec3::ZERO, acc, f32::NAN);
+        let ok = !nan.is_finite() && !bad_dt.is_finite() && f.attitude() == before;
+        within("filter bad input", if ok { 0.0 } else { 1.0 }, 0.0, 2)
+    });
+}
