@@ -31,7 +31,7 @@ fn register_font() -> bool {
 
 /// Samples per plotted point: the largest error of each run of this many
 /// samples, so that peaks survive.
-const BUCKET: usize = 20;
+const BUCKET: usize = 35;
 
 /// Writes the plot to `path` (PNG): to a temporary file first, renamed at
 /// the end, so that no half-written plot is left behind.
@@ -73,7 +73,61 @@ fn series(t: &Trial) -> Vec<(f64, f64, f64)> {
 }
 
 fn draw(path: &Path, trials: &[Trial], labels: bool) -> Result<(), Box<dyn std::error::Error>> {
-    let root = BitMapBackend::new(path, (960, 260 * trials.len() as u32)).into_drawing_area();
+    let (width, height) = (800u32, 220 * trials.len() as u32);
+    let mut rgb = vec![0u8; (width * height * 3) as usize];
+    plot_into(&mut rgb, (width, height), trials, labels)?;
+    encode_png(path, &rgb, (width, height))
+}
+
+/// Encodes an RGB image as an indexed PNG: the 256 most frequent colours
+/// form the palette, and the rare others (anti-aliasing shades) take the
+/// nearest of them. A third of the size of the RGB file, with no visible
+/// change.
+fn encode_png(
+    path: &Path,
+    rgb: &[u8],
+    (width, height): (u32, u32),
+) -> Result<(), Box<dyn std::error::Error>> {
+    let pixels: Vec<[u8; 3]> = rgb.chunks_exact(3).map(|p| [p[0], p[1], p[2]]).collect();
+    let mut counts = std::collections::HashMap::new();
+    for &p in &pixels {
+        *counts.entry(p).or_insert(0u32) += 1;
+    }
+    let mut by_count: Vec<([u8; 3], u32)> = counts.into_iter().collect();
+    by_count.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
+    let palette: Vec<[u8; 3]> = by_count.iter().take(256).map(|&(c, _)| c).collect();
+    let distance = |a: [u8; 3], b: [u8; 3]| -> i32 {
+        (0..3)
+            .map(|i| (i32::from(a[i]) - i32::from(b[i])).pow(2))
+            .sum()
+    };
+    let mut index_of = std::collections::HashMap::new();
+    let indices: Vec<u8> = pixels
+        .iter()
+        .map(|&p| {
+            *index_of.entry(p).or_insert_with(|| {
+                (0..palette.len())
+                    .min_by_key(|&i| distance(p, palette[i]))
+                    .unwrap_or(0) as u8
+            })
+        })
+        .collect();
+    let file = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let mut encoder = png::Encoder::new(file, width, height);
+    encoder.set_compression(png::Compression::High);
+    encoder.set_color(png::ColorType::Indexed);
+    encoder.set_palette(palette.concat());
+    encoder.write_header()?.write_image_data(&indices)?;
+    Ok(())
+}
+
+fn plot_into(
+    rgb: &mut [u8],
+    size: (u32, u32),
+    trials: &[Trial],
+    labels: bool,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let root = BitMapBackend::with_buffer(rgb, size).into_drawing_area();
     root.fill(&WHITE)?;
     let six_colour = RGBColor(31, 119, 180);
     let nine_colour = RGBColor(214, 39, 40);
