@@ -4,18 +4,10 @@
 
 mod common;
 
-use common::{angle_error, pow64, rotation_angle64, to_f64, vec_to_f64, Draws};
+use common::{angle_error, draw_count, pow64, rotation_angle64, to_f64, vec_to_f64, Draws};
 use nalgebra as na;
 use rigtform::accuracy;
 use rigtform::{Cvec3, Quat};
-
-/// Random draws per check: 100,000 unless `RIGTFORM_DRAWS` says otherwise.
-fn draw_count() -> usize {
-    std::env::var("RIGTFORM_DRAWS")
-        .ok()
-        .and_then(|n| n.parse().ok())
-        .unwrap_or(100_000)
-}
 
 /// The exponential map in f64: the rotation by |v| about v.
 fn exp64(v: na::Vector3<f64>) -> na::Quaternion<f64> {

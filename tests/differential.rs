@@ -8,20 +8,10 @@
 
 mod common;
 
-use common::{angle_error, slerp64, to_f64, Draws};
+use common::{angle_error, draw_count, slerp64, to_f64, Draws};
 use nalgebra as na;
 use rigtform::accuracy;
 use rigtform::{Cvec3, Matrix4, Quat};
-
-/// Random draws per operation: 100,000 unless the environment variable
-/// `RIGTFORM_DRAWS` says otherwise (more for a deeper search, fewer for
-/// mutation testing).
-fn draw_count() -> usize {
-    std::env::var("RIGTFORM_DRAWS")
-        .ok()
-        .and_then(|n| n.parse().ok())
-        .unwrap_or(100_000)
-}
 
 /// The largest error seen, and the input that caused it.
 struct Worst {

@@ -40,6 +40,16 @@ pub fn rig_tform() -> impl Strategy<Value = RigTForm> {
     (vec3(), unit_quat()).prop_map(|(t, r)| RigTForm::new(t, r))
 }
 
+/// Random draws per operation: 100,000 unless the environment variable
+/// `RIGTFORM_DRAWS` says otherwise (more for a deeper search, fewer for
+/// mutation testing).
+pub fn draw_count() -> usize {
+    std::env::var("RIGTFORM_DRAWS")
+        .ok()
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(100_000)
+}
+
 /// Plain random draws for the differential tests, which run far more cases
 /// than proptest's default and track the largest error.
 pub struct Draws(rand::rngs::StdRng);
