@@ -70,6 +70,8 @@ mod tests {
         assert_eq!(smoothing_factor(f32::INFINITY, 1.0), 1.0);
         assert_eq!(smoothing_factor(f32::MAX, 1e-30), 1.0);
         assert!(smoothing_factor(f32::NAN, 1.0).is_nan());
+        assert!(smoothing_factor(f32::NAN, 0.0).is_nan());
+        assert!(smoothing_factor(f32::NAN, -1.0).is_nan());
         assert!(smoothing_factor(0.01, f32::NAN).is_nan());
     }
 
