@@ -206,8 +206,8 @@ struct Rest {
 /// operations; the magnetometer adds two products, a rotation, an atan2, a
 /// sine-cosine and two `exp_m1`. Executed instructions per update
 /// on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s", LTO, counted
-/// by `embedded/cost.sh`): 2,332 (6D) and 3,164 (9D) with libm, 2,396 and
-/// 3,244 with `fast-math`.
+/// by `embedded/cost.sh`): 2,343 (6D) and 3,207 (9D) with libm, 2,398 and
+/// 3,277 with `fast-math`.
 ///
 /// # Bad input
 ///
