@@ -214,6 +214,19 @@ pub fn slerp_turns_by_alpha_times_the_angle(a: Quat, b: Quat, alpha: f32) -> Ver
     )
 }
 
+/// `slerp(a, b, 1)` is the rotation of `b` (possibly as `-b`), to within
+/// the documented slerp error, doubled for the error of measuring the angle.
+///
+/// Preconditions: `a` and `b` unit to [`ONE_STEP_NORM_TOL`].
+pub fn slerp_reaches_the_rotation_of_b_at_one(a: Quat, b: Quat) -> Verdict {
+    let theta = f64::from(a.angle_to(b));
+    within(
+        "slerp_reaches_the_rotation_of_b_at_one",
+        f64::from(a.slerp(b, 1.0).angle_to(b)),
+        2.0 * f64::from(rigtform::accuracy::SLERP_MAX_ANGLE_ERROR) * theta.max(1.0),
+    )
+}
+
 /// `nlerp` of unit quaternions is unit, for `alpha` in `[0, 1]` (it blends
 /// on one hemisphere, so the sum never comes near zero).
 ///
@@ -415,6 +428,7 @@ mod tests {
         assert_eq!(slerp_is_unit(a, -a, 0.5), Ok(()));
         assert_eq!(slerp_is_exact_at_zero(a, b), Ok(()));
         assert_eq!(slerp_turns_by_alpha_times_the_angle(a, b, 0.25), Ok(()));
+        assert_eq!(slerp_reaches_the_rotation_of_b_at_one(a, -b), Ok(()));
         assert_eq!(nlerp_is_unit(a, -b, 0.5), Ok(()));
         assert_eq!(blend_is_unit_or_identity(&[(a, 1.0), (b, 2.0)]), Ok(()));
         assert_eq!(blend_is_unit_or_identity(&[(a, 1.0), (a, -1.0)]), Ok(()));
@@ -444,6 +458,7 @@ mod tests {
         assert!(slerp_of_non_finite_is_nan(a, a, 0.5).is_err());
         assert!(slerp_is_unit(scaled, a, 0.5).is_err());
         assert!(slerp_turns_by_alpha_times_the_angle(a, -a.inv(), 3.0).is_err());
+        assert!(slerp_reaches_the_rotation_of_b_at_one(a, Quat::NAN).is_err());
         assert!(nlerp_is_unit(Quat::NAN, a, 0.5).is_err());
         assert!(blend_is_unit_or_identity(&[(scaled, 1.0)]).is_ok()); // normalized
         assert!(blend_is_unit_or_identity(&[(a, f32::NAN)]).is_err());
