@@ -94,20 +94,7 @@ impl Framebuffer {
     #[must_use]
     pub fn resolve(&self) -> Image {
         let mut image = Image::new(self.width, self.height, [0; 3]);
-        let scale = 1.0 / self.samples as f32;
-        for (pixel, samples) in image
-            .pixels_mut()
-            .iter_mut()
-            .zip(self.color.chunks_exact(self.samples))
-        {
-            let mut sum = [0.0f32; 3];
-            for c in samples {
-                for k in 0..3 {
-                    sum[k] += c[k];
-                }
-            }
-            *pixel = sum.map(|v| linear_to_srgb8(v * scale));
-        }
+        resolve_samples(&self.color, self.samples, image.pixels_mut());
         image
     }
 
@@ -156,10 +143,67 @@ impl Band<'_> {
         let i = self.index(x, y, s);
         self.color[i] = color;
     }
+
+    /// Resolves the band's pixels (see [`Framebuffer::resolve`]) into
+    /// `pixels`, its rows of the final image.
+    ///
+    /// # Panics
+    ///
+    /// If `pixels` does not hold exactly the band's pixels.
+    pub fn resolve_into(&self, pixels: &mut [[u8; 3]]) {
+        assert_eq!(
+            pixels.len(),
+            self.rows as usize * self.width as usize,
+            "band size"
+        );
+        resolve_samples(self.color, self.samples, pixels);
+    }
+}
+
+/// Averages each run of `samples` colours into one sRGB pixel.
+fn resolve_samples(color: &[[f32; 3]], samples: usize, pixels: &mut [[u8; 3]]) {
+    let table = srgb_table();
+    let scale = 1.0 / samples as f32;
+    let encode = |v: f32| table[srgb_index(v * scale)];
+    for (pixel, samples) in pixels.iter_mut().zip(color.chunks_exact(samples)) {
+        let mut sum = [0.0f32; 3];
+        for c in samples {
+            sum[0] += c[0];
+            sum[1] += c[1];
+            sum[2] += c[2];
+        }
+        *pixel = [encode(sum[0]), encode(sum[1]), encode(sum[2])];
+    }
+}
+
+/// Steps of the sRGB table over [0, 1].
+const SRGB_STEPS: usize = 4096;
+
+/// The sRGB transfer function (IEC 61966-2-1) at `SRGB_STEPS + 1` points.
+fn srgb_table() -> &'static [u8; SRGB_STEPS + 1] {
+    static TABLE: OnceLock<[u8; SRGB_STEPS + 1]> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        core::array::from_fn(|i| {
+            let l = i as f64 / SRGB_STEPS as f64;
+            let s = if l <= 0.003_130_8 {
+                12.92 * l
+            } else {
+                1.055 * l.powf(1.0 / 2.4) - 0.055
+            };
+            (s * 255.0).round() as u8
+        })
+    })
+}
+
+/// The table index of a linear value: clamped to [0, 1] and rounded by
+/// adding a half and truncating (`f32::round` is a library call on baseline
+/// x86-64); NaN becomes 0 through the saturating cast.
+fn srgb_index(v: f32) -> usize {
+    ((v.clamp(0.0, 1.0) * SRGB_STEPS as f32 + 0.5) as usize).min(SRGB_STEPS)
 }
 
 /// Encodes a linear value in [0, 1] (clamped) as an 8-bit sRGB value, with
-/// the sRGB transfer function (IEC 61966-2-1) tabulated at 4096 points.
+/// the sRGB transfer function (IEC 61966-2-1) tabulated at 4097 points.
 ///
 /// ```
 /// use rigtform_render::linear_to_srgb8;
@@ -169,24 +213,7 @@ impl Band<'_> {
 /// ```
 #[must_use]
 pub fn linear_to_srgb8(v: f32) -> u8 {
-    const STEPS: usize = 4096;
-    static TABLE: OnceLock<Vec<u8>> = OnceLock::new();
-    let table = TABLE.get_or_init(|| {
-        (0..=STEPS)
-            .map(|i| {
-                let l = i as f64 / STEPS as f64;
-                let s = if l <= 0.003_130_8 {
-                    12.92 * l
-                } else {
-                    1.055 * l.powf(1.0 / 2.4) - 0.055
-                };
-                (s * 255.0).round() as u8
-            })
-            .collect()
-    });
-    // NaN becomes 0 through the saturating cast.
-    let i = (v.clamp(0.0, 1.0) * STEPS as f32).round() as usize;
-    table[i.min(STEPS)]
+    srgb_table()[srgb_index(v)]
 }
 
 #[cfg(test)]

@@ -160,14 +160,9 @@ impl Scene<'_> {
             .concat()
     }
 
-    /// Renders the scene into a framebuffer (unresolved), on the current
-    /// `rayon` thread pool.
-    ///
-    /// # Panics
-    ///
-    /// If the size is zero.
-    #[must_use]
-    pub fn render_samples(&self, settings: &Settings) -> (Framebuffer, Stats) {
+    /// Draws every band, in parallel on the current `rayon` thread pool,
+    /// and resolves each into its rows of `image` when one is given.
+    fn draw(&self, settings: &Settings, image: Option<&mut Image>) -> (Framebuffer, Stats) {
         assert!(settings.width > 0 && settings.height > 0, "empty viewport");
         let triangles = self.setup(settings);
         let lighting = Lighting::new(self.camera.eye, self.lights, self.intensity);
@@ -186,13 +181,25 @@ impl Scene<'_> {
                 bin.push(t);
             }
         }
+        let image_rows: Vec<Option<&mut [[u8; 3]]>> = match image {
+            Some(image) => image
+                .pixels_mut()
+                .chunks_mut(BAND_ROWS as usize * settings.width as usize)
+                .map(Some)
+                .collect(),
+            None => bands.iter().map(|_| None).collect(),
+        };
         let shade = |a: &[f32; crate::vertex::ATTRIBUTES]| lighting.shade(a);
         bands
             .par_iter_mut()
             .zip(bins.par_iter())
-            .for_each(|(band, bin)| {
+            .zip(image_rows)
+            .for_each(|((band, bin), rows)| {
                 for t in bin {
                     t.rasterize(band, settings.msaa, &shade);
+                }
+                if let Some(rows) = rows {
+                    band.resolve_into(rows);
                 }
             });
         drop(bands);
@@ -203,14 +210,28 @@ impl Scene<'_> {
         (fb, stats)
     }
 
-    /// Renders the scene to an image.
+    /// Renders the scene into a framebuffer (unresolved), on the current
+    /// `rayon` thread pool.
+    ///
+    /// # Panics
+    ///
+    /// If the size is zero.
+    #[must_use]
+    pub fn render_samples(&self, settings: &Settings) -> (Framebuffer, Stats) {
+        self.draw(settings, None)
+    }
+
+    /// Renders the scene to an image, on the current `rayon` thread pool;
+    /// each band is resolved by the thread that drew it.
     ///
     /// # Panics
     ///
     /// If the size is zero.
     #[must_use]
     pub fn render(&self, settings: &Settings) -> Image {
-        self.render_samples(settings).0.resolve()
+        let mut image = Image::new(settings.width, settings.height, [0; 3]);
+        let _ = self.draw(settings, Some(&mut image));
+        image
     }
 }
 
@@ -332,6 +353,8 @@ mod tests {
         let one = render_with(1);
         assert_eq!(one, render_with(4));
         assert_eq!(one, render_with(3));
+        // Resolving band by band gives what resolving the whole buffer gives.
+        assert_eq!(one, scene.render_samples(&s).0.resolve());
         assert!(
             one.pixels().iter().any(|p| p[0] > 150),
             "something was drawn"

@@ -56,24 +56,33 @@ impl Lighting {
     #[must_use]
     pub fn shade(&self, a: &[f32; ATTRIBUTES]) -> [f32; 3] {
         let p = Cvec3::new(a[0], a[1], a[2]);
-        let n = Cvec3::new(a[3], a[4], a[5]).try_normalize();
+        let n = unit(Cvec3::new(a[3], a[4], a[5]));
         let base = [a[6], a[7], a[8]];
         let mut diffuse = AMBIENT;
         let mut specular = 0.0;
         if let Some(n) = n {
-            let v = (-p).try_normalize().unwrap_or(Cvec3::Z);
+            let v = unit(-p).unwrap_or(Cvec3::Z);
             for (light, intensity) in self.lights.iter().zip(self.intensity) {
-                let Some(l) = (*light - p).try_normalize() else {
+                let Some(l) = unit(*light - p) else {
                     continue;
                 };
                 diffuse += intensity * n.dot(l).max(0.0);
-                if let Some(h) = (l + v).try_normalize() {
+                if let Some(h) = unit(l + v) {
                     specular += intensity * pow64(n.dot(h).max(0.0));
                 }
             }
         }
         base.map(|c| c * diffuse + SPECULAR * specular)
     }
+}
+
+/// `v` scaled to unit length, or `None` for a zero, subnormal-squared or
+/// non-finite `v`. Plainly `v / sqrt(v . v)`: the fragment stage runs this
+/// four times per pixel, and its inputs are eye-space lengths of ordinary
+/// size, so the library's scale-safe `try_normalize` is not needed here.
+fn unit(v: Cvec3) -> Option<Cvec3> {
+    let n2 = v.dot(v);
+    (n2.is_normal()).then(|| v * (1.0 / n2.sqrt()))
 }
 
 /// `x^64` by six squarings.
@@ -91,6 +100,16 @@ mod tests {
 
     fn attrs(p: Cvec3, n: Cvec3) -> [f32; ATTRIBUTES] {
         [p.x, p.y, p.z, n.x, n.y, n.z, 1.0, 1.0, 1.0]
+    }
+
+    #[test]
+    fn unit_has_unit_length_and_refuses_zero() {
+        let u = unit(Cvec3::new(3.0, -4.0, 12.0)).unwrap();
+        assert!((u.norm() - 1.0).abs() < 1e-6);
+        assert!((u.x - 3.0 / 13.0).abs() < 1e-7);
+        assert_eq!(unit(Cvec3::ZERO), None);
+        assert_eq!(unit(Cvec3::new(f32::NAN, 0.0, 0.0)), None);
+        assert_eq!(unit(Cvec3::new(f32::INFINITY, 0.0, 0.0)), None);
     }
 
     #[test]
