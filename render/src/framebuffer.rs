@@ -52,18 +52,6 @@ impl Framebuffer {
         }
     }
 
-    /// Width in pixels.
-    #[must_use]
-    pub fn width(&self) -> u32 {
-        self.width
-    }
-
-    /// Height in pixels.
-    #[must_use]
-    pub fn height(&self) -> u32 {
-        self.height
-    }
-
     /// The framebuffer cut into bands of `rows` rows (the last may be
     /// shorter), top to bottom. The cut depends only on the size, never on
     /// the number of threads.
