@@ -7,6 +7,7 @@ use std::time::Instant;
 
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
 use rigtform_render::demo::{contact_sheet, Comparison, Demo};
 use rigtform_render::output::{write_gif, write_png};
 use rigtform_render::{Cull, Image, Mesh, Msaa, Settings};
@@ -140,15 +141,20 @@ fn run(args: &Args) -> Result<String, String> {
             .progress_chars("=> "),
     );
     bar.set_message("rendering");
-    let mut images: Vec<Image> = Vec::with_capacity(args.frames as usize);
-    for i in 0..args.frames {
-        let alpha = Demo::alpha(i, args.frames);
-        let image = pool.install(|| demo.render_frame(alpha, &settings));
-        write_png(&frames_dir.join(format!("frame_{i:03}.png")), &image)
-            .map_err(|e| e.to_string())?;
-        images.push(image);
-        bar.inc(1);
-    }
+    // Frames in parallel (and bands in parallel inside each): every frame is
+    // a pure function of its alpha, so the files do not depend on the order.
+    let images: Vec<Image> = pool.install(|| {
+        (0..args.frames)
+            .into_par_iter()
+            .map(|i| {
+                let image = demo.render_frame(Demo::alpha(i, args.frames), &settings);
+                write_png(&frames_dir.join(format!("frame_{i:03}.png")), &image)
+                    .map_err(|e| e.to_string())?;
+                bar.inc(1);
+                Ok(image)
+            })
+            .collect::<Result<_, String>>()
+    })?;
     bar.finish_and_clear();
     let render_time = start.elapsed();
 
