@@ -77,6 +77,11 @@ pub const TRAIL_MARKS: u32 = 16;
 
 /// The two keyframes: the second is moved across the ground and turned a
 /// further 150 degrees about a tilted axis.
+///
+/// ```
+/// let (k0, k1) = rigtform_render::demo::keyframes();
+/// assert!((k0.r.angle_to(k1.r).to_degrees() - 150.0).abs() < 1e-3);
+/// ```
 #[must_use]
 pub fn keyframes() -> (RigTForm, RigTForm) {
     let r0 = Quat::from_rotation_y(0.4) * Quat::from_rotation_x(-0.25);
@@ -207,6 +212,12 @@ impl Demo {
 
     /// The second label line of a panel at `alpha`: a measure of what the
     /// method does there.
+    ///
+    /// ```
+    /// use rigtform_render::demo::{Comparison, Demo};
+    /// let demo = Demo::new(Comparison::Interpolation, None);
+    /// assert_eq!(demo.caption(&demo.panels()[2], 1.0), "turned 150.0 deg");
+    /// ```
     #[must_use]
     pub fn caption(&self, panel: &Panel, alpha: f32) -> String {
         let slerp = self.object_frame(
@@ -251,6 +262,15 @@ impl Demo {
 
     /// One frame of the animation: the panels side by side, each `width x
     /// height` under a label bar.
+    ///
+    /// ```
+    /// use rigtform_render::demo::{Comparison, Demo, LABEL_BAR};
+    /// use rigtform_render::{Cull, Msaa, Settings};
+    /// let demo = Demo::new(Comparison::Interpolation, None);
+    /// let settings = Settings { width: 32, height: 24, msaa: Msaa::Off, cull: Cull::Back };
+    /// let frame = demo.render_frame(0.5, &settings);
+    /// assert_eq!((frame.width(), frame.height()), (3 * 32 + 2 * 4, 24 + LABEL_BAR));
+    /// ```
     #[must_use]
     pub fn render_frame(&self, alpha: f32, settings: &Settings) -> Image {
         let (w, h) = (settings.width, settings.height);

@@ -53,6 +53,13 @@ impl Euler {
     }
 
     /// The rotation `Rz(z) Ry(y) Rx(x)`.
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// use rigtform_render::Euler;
+    /// let q = Euler { x: 0.0, y: 0.0, z: 0.7 }.to_quat();
+    /// assert!(q.angle_to(Quat::from_rotation_z(0.7)) < 1e-6);
+    /// ```
     #[must_use]
     pub fn to_quat(self) -> Quat {
         Quat::from_rotation_z(self.z)
@@ -61,6 +68,14 @@ impl Euler {
     }
 
     /// Each angle lerped on its own: the "bad idea".
+    ///
+    /// ```
+    /// use rigtform_render::Euler;
+    /// let a = Euler { x: 0.0, y: 0.2, z: -1.0 };
+    /// let b = Euler { x: 1.0, y: 0.4, z: 1.0 };
+    /// let mid = a.lerp(b, 0.5);
+    /// assert!((mid.x - 0.5).abs() < 1e-6 && (mid.y - 0.3).abs() < 1e-6 && mid.z.abs() < 1e-6);
+    /// ```
     #[must_use]
     pub fn lerp(self, other: Self, alpha: f32) -> Self {
         let l = |a: f32, b: f32| a + (b - a) * alpha;

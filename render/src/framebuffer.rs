@@ -55,6 +55,13 @@ impl Framebuffer {
     /// The framebuffer cut into bands of `rows` rows (the last may be
     /// shorter), top to bottom. The cut depends only on the size, never on
     /// the number of threads.
+    ///
+    /// ```
+    /// use rigtform_render::{Framebuffer, Msaa};
+    /// let mut fb = Framebuffer::new(4, 10, Msaa::Off, [0.0; 3]);
+    /// let ends: Vec<_> = fb.bands_mut(4).iter().map(|b| b.y_end()).collect();
+    /// assert_eq!(ends, [4, 8, 10]);
+    /// ```
     pub fn bands_mut(&mut self, rows: u32) -> Vec<Band<'_>> {
         let rows = rows.max(1);
         let per_band = rows as usize * self.width as usize * self.samples;
@@ -116,6 +123,14 @@ impl Band<'_> {
 
     /// The depth test ("less"): `true`, and `z` stored, when `z` is nearer
     /// than what sample `s` of pixel `(x, y)` holds. NaN never passes.
+    ///
+    /// ```
+    /// use rigtform_render::{Framebuffer, Msaa};
+    /// let mut fb = Framebuffer::new(1, 1, Msaa::Off, [0.0; 3]);
+    /// let mut bands = fb.bands_mut(1);
+    /// assert!(bands[0].depth_test(0, 0, 0, 0.3));
+    /// assert!(!bands[0].depth_test(0, 0, 0, 0.6)); // behind what is there
+    /// ```
     pub fn depth_test(&mut self, x: u32, y: u32, s: usize, z: f32) -> bool {
         let i = self.index(x, y, s);
         if z < self.depth[i] {

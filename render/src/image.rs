@@ -94,6 +94,13 @@ impl Image {
 
     /// Copies `other` with its top-left corner at `(x, y)`, clipped to this
     /// image.
+    ///
+    /// ```
+    /// use rigtform_render::Image;
+    /// let mut big = Image::new(4, 4, [0; 3]);
+    /// big.blit(&Image::new(2, 2, [9; 3]), 3, 3); // only one pixel lands inside
+    /// assert_eq!(big.pixels().iter().filter(|p| **p == [9; 3]).count(), 1);
+    /// ```
     pub fn blit(&mut self, other: &Image, x: i64, y: i64) {
         for j in 0..other.height {
             for i in 0..other.width {
@@ -115,6 +122,13 @@ impl Image {
     /// Draws `text` in the public-domain 8x8 font of the `font8x8` crate,
     /// each font pixel a `scale x scale` square, its top-left corner at
     /// `(x, y)`. Characters the font lacks are drawn as blanks.
+    ///
+    /// ```
+    /// use rigtform_render::Image;
+    /// let mut im = Image::new(Image::text_width("Hi", 2), 16, [0; 3]);
+    /// im.draw_text(0, 0, "Hi", 2, [255; 3]);
+    /// assert!(im.pixels().contains(&[255; 3]));
+    /// ```
     pub fn draw_text(&mut self, x: i64, y: i64, text: &str, scale: u32, color: [u8; 3]) {
         let s = i64::from(scale.max(1));
         for (n, ch) in text.chars().enumerate() {

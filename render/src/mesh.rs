@@ -195,6 +195,15 @@ impl Mesh {
     }
 
     /// Appends the vertices and triangles of `other`.
+    ///
+    /// ```
+    /// use rigtform::Cvec3;
+    /// use rigtform_render::Mesh;
+    /// let mut two = Mesh::cube(1.0, [1.0; 3]);
+    /// two.append(&Mesh::cube(1.0, [1.0; 3]).translated(Cvec3::X * 3.0));
+    /// assert_eq!(two.triangles.len(), 24);
+    /// assert_eq!(two.bounds().1.x, 3.5);
+    /// ```
     pub fn append(&mut self, other: &Mesh) {
         let base = self.positions.len() as u32;
         self.positions.extend_from_slice(&other.positions);
@@ -213,6 +222,17 @@ impl Mesh {
     ///
     /// A message naming the file when it cannot be read or parsed, holds no
     /// triangle, or has a non-finite coordinate.
+    ///
+    /// ```
+    /// use rigtform_render::Mesh;
+    /// let dir = std::env::temp_dir().join(format!("rigtform-doc-obj-{}", std::process::id()));
+    /// std::fs::create_dir_all(&dir).unwrap();
+    /// let path = dir.join("tri.obj");
+    /// std::fs::write(&path, "v 0 0 0\nv 4 0 0\nv 0 2 0\nf 1 2 3\n").unwrap();
+    /// let mesh = Mesh::load_obj(&path, 1.0, [1.0; 3]).unwrap();
+    /// assert_eq!(mesh.bounds().1.x, 0.5); // centred, the longest side now 1
+    /// std::fs::remove_dir_all(&dir).unwrap();
+    /// ```
     pub fn load_obj(path: &Path, size: f32, color: [f32; 3]) -> Result<Self, String> {
         let (models, _materials) = tobj::load_obj(path, &tobj::GPU_LOAD_OPTIONS)
             .map_err(|e| format!("cannot load OBJ file {}: {e}", path.display()))?;

@@ -55,6 +55,15 @@ fn other(e: impl std::fmt::Display) -> io::Error {
 /// # Errors
 ///
 /// I/O and encoding errors, with the path in the message.
+///
+/// ```
+/// use rigtform_render::output::{read_png, write_png};
+/// use rigtform_render::Image;
+/// let path = std::env::temp_dir().join(format!("rigtform-doc-{}.png", std::process::id()));
+/// write_png(&path, &Image::new(2, 2, [1, 2, 3])).unwrap();
+/// assert_eq!(read_png(&path).unwrap().pixel(1, 1), [1, 2, 3]);
+/// std::fs::remove_file(&path).unwrap();
+/// ```
 pub fn write_png(path: &Path, image: &Image) -> io::Result<()> {
     write_atomically(path, |out| {
         let mut encoder = png::Encoder::new(out, image.width(), image.height());

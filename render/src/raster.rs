@@ -30,6 +30,11 @@ pub enum Msaa {
 
 impl Msaa {
     /// Samples per pixel.
+    ///
+    /// ```
+    /// use rigtform_render::Msaa;
+    /// assert_eq!(Msaa::X4.samples(), 4);
+    /// ```
     #[must_use]
     pub fn samples(self) -> usize {
         self.offsets().len()
@@ -125,6 +130,15 @@ impl Triangle {
     ///
     /// Coordinates within the guard band of [`clip`](crate::clip), which
     /// keeps the edge functions far from overflow.
+    ///
+    /// ```
+    /// use rigtform_render::{Cull, Msaa, ScreenVertex, Triangle};
+    /// let v = |x, y| ScreenVertex { x, y, z: 0.0, inv_w: 1.0, attrs_w: [0.0; 9] };
+    /// // Clockwise on screen (y down) is counter-clockwise in NDC: a front face.
+    /// let t = Triangle::setup([v(0.0, 0.0), v(0.0, 4.0), v(4.0, 0.0)], Cull::Back, 8, 8).unwrap();
+    /// assert_eq!(t.doubled_area(), 16.0);
+    /// assert!(Triangle::setup([v(0.0, 0.0), v(4.0, 0.0), v(0.0, 4.0)], Cull::Back, 8, 8).is_none());
+    /// ```
     #[must_use]
     pub fn setup(v: [ScreenVertex; 3], cull: Cull, width: u32, height: u32) -> Option<Self> {
         let p = v.map(|s| (snap(s.x), snap(s.y)));
@@ -181,6 +195,19 @@ impl Triangle {
     /// `mask` has bit `s` set for each covered sample `s`, and `e[s]` holds
     /// the three edge functions at sample `s` (barycentric weights times
     /// twice the area).
+    ///
+    /// ```
+    /// use rigtform_render::{Cull, Msaa, ScreenVertex, Triangle};
+    /// let v = |x, y| ScreenVertex { x, y, z: 0.0, inv_w: 1.0, attrs_w: [0.0; 9] };
+    /// // The square [0, 4]^2 as two triangles sharing a diagonal: 16 pixels,
+    /// // each covered exactly once.
+    /// let mut count = 0;
+    /// for tri in [[v(0.0, 0.0), v(0.0, 4.0), v(4.0, 4.0)], [v(0.0, 0.0), v(4.0, 4.0), v(4.0, 0.0)]] {
+    ///     let t = Triangle::setup(tri, Cull::Back, 8, 8).unwrap();
+    ///     t.for_each_covered(Msaa::Off, 0, 7, |_, _, mask, _| count += mask.count_ones());
+    /// }
+    /// assert_eq!(count, 16);
+    /// ```
     pub fn for_each_covered(
         &self,
         msaa: Msaa,

@@ -63,6 +63,14 @@ impl Camera {
     }
 
     /// The projection matrix for a viewport of the given aspect ratio.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Cvec4};
+    /// use rigtform_render::Camera;
+    /// let cam = Camera::looking_at(Cvec3::new(0.0, 0.0, 5.0), Cvec3::ZERO, 1.0);
+    /// let p = cam.projection(1.5) * Cvec4::new(0.0, 0.0, -cam.near, 1.0);
+    /// assert!((p.z / p.w + 1.0).abs() < 1e-5); // the near plane maps to NDC -1
+    /// ```
     #[must_use]
     pub fn projection(&self, aspect: f32) -> Matrix4 {
         Matrix4::perspective(self.fovy, aspect, self.near, self.far)

@@ -93,6 +93,17 @@ impl Transforms {
 
 /// Runs the vertex stage over every vertex of `mesh`, its colours multiplied
 /// by `tint`.
+///
+/// ```
+/// use rigtform::{Cvec3, Matrix4, RigTForm};
+/// use rigtform_render::{transform_vertices, Frame, Mesh, Transforms};
+/// let eye = RigTForm::from_translation(Cvec3::new(0.0, 0.0, 3.0));
+/// let proj = Matrix4::perspective(1.0, 1.0, 0.1, 10.0);
+/// let t = Transforms::new(eye, Frame::Rigid(RigTForm::IDENTITY), Cvec3::new(1.0, 1.0, 1.0), proj).unwrap();
+/// let v = transform_vertices(&Mesh::cube(1.0, [1.0; 3]), &t, [1.0; 3]);
+/// assert_eq!(v.len(), 24);
+/// assert!(v.iter().all(|c| c.clip.w > 2.0)); // w is the distance in front of the eye
+/// ```
 #[must_use]
 pub fn transform_vertices(mesh: &Mesh, t: &Transforms, tint: [f32; 3]) -> Vec<ClipVertex> {
     mesh.positions
