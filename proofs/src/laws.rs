@@ -82,6 +82,13 @@ fn vnorm1(v: Cvec3) -> f64 {
     f64::from(v.x).abs() + f64::from(v.y).abs() + f64::from(v.z).abs()
 }
 
+/// The slerp angle error allowed for a turn of `theta` radians: the
+/// documented bound per radian turned (at least one radian), doubled for
+/// the error of measuring angles with `angle_to`.
+fn slerp_angle_tol(theta: f64) -> f64 {
+    2.0 * f64::from(rigtform::accuracy::SLERP_MAX_ANGLE_ERROR) * theta.max(1.0)
+}
+
 fn within(law: &'static str, measured: f64, bound: f64) -> Verdict {
     // Written so that a NaN measurement fails.
     if measured <= bound {
@@ -205,12 +212,10 @@ pub fn slerp_is_exact_at_zero(a: Quat, b: Quat) -> Verdict {
 pub fn slerp_turns_by_alpha_times_the_angle(a: Quat, b: Quat, alpha: f32) -> Verdict {
     let theta = a.angle_to(b);
     let turned = a.angle_to(a.slerp(b, alpha));
-    let tol =
-        2.0 * f64::from(rigtform::accuracy::SLERP_MAX_ANGLE_ERROR) * f64::from(theta).max(1.0);
     within(
         "slerp_turns_by_alpha_times_the_angle",
         (f64::from(turned) - f64::from(alpha) * f64::from(theta)).abs(),
-        tol,
+        slerp_angle_tol(theta.into()),
     )
 }
 
@@ -219,11 +224,10 @@ pub fn slerp_turns_by_alpha_times_the_angle(a: Quat, b: Quat, alpha: f32) -> Ver
 ///
 /// Preconditions: `a` and `b` unit to [`ONE_STEP_NORM_TOL`].
 pub fn slerp_reaches_the_rotation_of_b_at_one(a: Quat, b: Quat) -> Verdict {
-    let theta = f64::from(a.angle_to(b));
     within(
         "slerp_reaches_the_rotation_of_b_at_one",
         f64::from(a.slerp(b, 1.0).angle_to(b)),
-        2.0 * f64::from(rigtform::accuracy::SLERP_MAX_ANGLE_ERROR) * theta.max(1.0),
+        slerp_angle_tol(a.angle_to(b).into()),
     )
 }
 
@@ -472,5 +476,62 @@ mod tests {
         let err = product_norm_is_multiplicative(a, Quat::NAN).unwrap_err();
         assert_eq!(err.law, "product_norm_is_multiplicative");
         assert!(err.measured.is_nan());
+    }
+
+    #[cfg(not(feature = "fast-math"))]
+    #[test]
+    fn tolerances_follow_their_derivation() {
+        let u = 1.0 / 16_777_216.0; // 2^-24
+        let unit = f64::from(UNIT_NORM_ERROR);
+        let rotate = f64::from(ROTATE_MAX_REL_ERROR);
+        assert_eq!(ONE_STEP_NORM_TOL, 4.0 * unit);
+        assert_eq!(TWO_STEP_NORM_TOL, 8.0 * unit);
+        assert_eq!(TRANSLATION_REL_TOL, 16.0 * unit + 8.0 * rotate);
+        // The worst case of a product's squared norm, 16u, fits under the
+        // one-step tolerance, and the tolerance is not much looser.
+        assert!((16.0 * u..=32.0 * u).contains(&ONE_STEP_NORM_TOL));
+        let s = f64::from(rigtform::accuracy::SLERP_MAX_ANGLE_ERROR);
+        assert_eq!(slerp_angle_tol(0.5), 2.0 * s);
+        assert_eq!(slerp_angle_tol(3.0), 6.0 * s);
+    }
+
+    #[test]
+    fn the_length_law_fails_just_beyond_its_bound() {
+        // A half turn about x scaled by s acts on y as 1 - 2 s^2: with
+        // s^2 = 1 + d, the squared length grows by about 4 d.
+        let b = 2.0 * ONE_STEP_NORM_TOL + 4.0 * f64::from(ROTATE_MAX_REL_ERROR);
+        let at = |d: f64| {
+            let s = (1.0 + d).sqrt() as f32;
+            rotation_preserves_length(Quat::new(0.0, s, 0.0, 0.0), Cvec3::Y)
+        };
+        assert_eq!(at(0.2 * b), Ok(()));
+        assert!(at(1.0 * b).is_err());
+    }
+
+    #[test]
+    fn the_product_law_fails_where_products_underflow() {
+        // Outside the precondition: the product of two 1e-30 quaternions
+        // underflows to zero, and its norm is no longer the product of norms.
+        let tiny = Quat::new(1e-30, 1e-30, 0.0, 0.0);
+        assert!(product_norm_is_multiplicative(tiny, tiny).is_err());
+    }
+
+    #[test]
+    fn helpers_compare_every_component() {
+        assert!(is_nan_quat(Quat::NAN));
+        for k in 0..4 {
+            let mut c = [f32::NAN; 4];
+            c[k] = 0.0;
+            assert!(!is_nan_quat(Quat::new(c[0], c[1], c[2], c[3])));
+            let mut d = [1.0f32; 4];
+            d[k] = -1.0;
+            let q = Quat::new(d[0], d[1], d[2], d[3]);
+            assert!(!same_bits(q, Quat::new(1.0, 1.0, 1.0, 1.0)));
+        }
+        assert!(!same_bits(
+            Quat::new(0.0, 0.0, 0.0, 0.0),
+            Quat::new(-0.0, 0.0, 0.0, 0.0)
+        ));
+        assert!(same_bits(Quat::NAN, Quat::NAN));
     }
 }
