@@ -64,6 +64,11 @@ pub const TRANSLATION_REL_TOL: f64 = 4.0 * ONE_STEP_NORM_TOL + 8.0 * ROTATE_MAX_
 /// inputs' magnitude: below this, products of tiny components underflow.
 const UNDERFLOW_SLACK: f64 = 1e-36;
 
+/// A relative tolerance applied to a magnitude, plus the underflow slack.
+fn relative(tol: f64, magnitude: f64) -> f64 {
+    tol * magnitude + UNDERFLOW_SLACK
+}
+
 fn norm2(q: Quat) -> f64 {
     let [w, x, y, z] = [q.w, q.x, q.y, q.z].map(f64::from);
     w * w + x * x + y * y + z * z
@@ -125,7 +130,7 @@ pub fn product_norm_is_multiplicative(a: Quat, b: Quat) -> Verdict {
     within(
         "product_norm_is_multiplicative",
         (got - want).abs(),
-        ONE_STEP_NORM_TOL * want,
+        relative(ONE_STEP_NORM_TOL, want),
     )
 }
 
@@ -141,7 +146,7 @@ pub fn rotation_preserves_length(q: Quat, v: Cvec3) -> Verdict {
     within(
         "rotation_preserves_length",
         (vnorm2(q * v) - len2).abs(),
-        (2.0 * b + b * b) * len2 + UNDERFLOW_SLACK,
+        relative(2.0 * b + b * b, len2),
     )
 }
 
@@ -277,7 +282,7 @@ pub fn inverse_is_an_involution(q: Quat) -> Verdict {
 pub fn product_with_inverse_is_real(q: Quat) -> Verdict {
     let r = q * q.inv();
     let n2 = norm2(q);
-    let tol = ONE_STEP_NORM_TOL * n2 + UNDERFLOW_SLACK;
+    let tol = relative(ONE_STEP_NORM_TOL, n2);
     within(
         "product_with_inverse_is_real (vector part, squared)",
         vnorm2(r.vector()),
@@ -319,7 +324,7 @@ pub fn rigid_product_with_inverse_is_identity(a: RigTForm) -> Verdict {
     within(
         "rigid_product_with_inverse_is_identity (squared)",
         vnorm2(p.t),
-        TRANSLATION_REL_TOL * TRANSLATION_REL_TOL * vnorm2(a.t) + UNDERFLOW_SLACK,
+        relative(TRANSLATION_REL_TOL * TRANSLATION_REL_TOL, vnorm2(a.t)),
     )
 }
 
@@ -337,7 +342,7 @@ pub fn rigid_inverse_is_an_involution(a: RigTForm) -> Verdict {
     within(
         "rigid_inverse_is_an_involution (squared)",
         vnorm2(b.t - a.t),
-        TRANSLATION_REL_TOL * TRANSLATION_REL_TOL * vnorm2(a.t) + UNDERFLOW_SLACK,
+        relative(TRANSLATION_REL_TOL * TRANSLATION_REL_TOL, vnorm2(a.t)),
     )
 }
 
@@ -387,7 +392,7 @@ pub fn rigid_matrix_moves_points_as_the_transform(a: RigTForm, c: Cvec4) -> Verd
     within(
         "rigid_matrix_moves_points_as_the_transform",
         worst,
-        tol + UNDERFLOW_SLACK,
+        relative(tol, 1.0),
     )
 }
 
@@ -493,6 +498,7 @@ mod tests {
         let s = f64::from(rigtform::accuracy::SLERP_MAX_ANGLE_ERROR);
         assert_eq!(slerp_angle_tol(0.5), 2.0 * s);
         assert_eq!(slerp_angle_tol(3.0), 6.0 * s);
+        assert_eq!(relative(2.0, 3.0), 6.0 + UNDERFLOW_SLACK);
     }
 
     #[test]
