@@ -398,9 +398,10 @@ proptest! {
     }
 
     #[test]
-    fn law_slerp_is_exact_at_zero_and_turns_by_alpha_times_the_angle(a in unit_quat(), b in unit_quat(), alpha in 0.0f32..=1.0) {
+    fn law_slerp_hits_its_endpoints_and_turns_by_alpha_times_the_angle(a in unit_quat(), b in unit_quat(), alpha in 0.0f32..=1.0) {
         law(laws::slerp_is_exact_at_zero(a, b))?;
         law(laws::slerp_turns_by_alpha_times_the_angle(a, b, alpha))?;
+        law(laws::slerp_reaches_the_rotation_of_b_at_one(a, b))?;
     }
 
     #[test]

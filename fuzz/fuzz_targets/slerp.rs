@@ -46,7 +46,11 @@ fuzz_target!(|input: Input| {
 
     // No panic on anything; NaN or infinity in, NaN out.
     let _ = (a.slerp(b, alpha), a.nlerp(b, alpha));
-    let entries = [(a, input.weights[0]), (b, input.weights[1]), (c, input.weights[2])];
+    let entries = [
+        (a, input.weights[0]),
+        (b, input.weights[1]),
+        (c, input.weights[2]),
+    ];
     let _ = Quat::blend(&entries);
     if !(a.is_finite() && b.is_finite() && alpha.is_finite()) {
         holds(laws::slerp_of_non_finite_is_nan(a, b, alpha));
@@ -64,6 +68,7 @@ fuzz_target!(|input: Input| {
     // Identical and antipodal pairs, whatever the fuzzer drew for b.
     holds(laws::slerp_is_unit(ua, ua, 0.5));
     holds(laws::slerp_is_unit(ua, -ua, 0.5));
+    holds(laws::slerp_reaches_the_rotation_of_b_at_one(ua, ub));
     if (0.0..=1.0).contains(&alpha) {
         holds(laws::slerp_turns_by_alpha_times_the_angle(ua, ub, alpha));
         holds(laws::nlerp_is_unit(ua, ub, alpha));

@@ -63,6 +63,11 @@ fn any_vec_within(limit: f32) -> Cvec3 {
     Cvec3::new(any_within(limit), any_within(limit), any_within(limit))
 }
 
+/// Any quaternion: every bit pattern of every component.
+fn any_quat_bits() -> Quat {
+    Quat::new(kani::any(), kani::any(), kani::any(), kani::any())
+}
+
 /// Any finite quaternion.
 fn any_finite_quat() -> Quat {
     Quat::new(any_finite(), any_finite(), any_finite(), any_finite())
@@ -81,6 +86,9 @@ fn any_unit_quat() -> Quat {
 /// 2^20: a solver bound on translations and vectors, far inside the laws'
 /// 2^40, and beyond any scene or sensor value in metres.
 const MILLION: f32 = 1_048_576.0;
+
+/// 2^60: the laws' precondition where a product must stay finite.
+const TWO_TO_60: f32 = 1.152_921_5e18;
 
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
@@ -151,7 +159,7 @@ fn pow_is_unit_for_every_finite_input() {
 #[cfg_attr(not(kani), test)]
 fn pow_of_non_finite_input_is_nan() {
     check("pow_of_non_finite_input_is_nan", || {
-        let q = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
+        let q = any_quat_bits();
         let alpha: f32 = kani::any();
         // Precondition: something is NaN or infinite.
         kani::assume(!(q.is_finite() && alpha.is_finite()));
@@ -167,8 +175,8 @@ fn pow_of_non_finite_input_is_nan() {
 #[cfg_attr(not(kani), test)]
 fn slerp_of_non_finite_input_is_nan() {
     check("slerp_of_non_finite_input_is_nan", || {
-        let a = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
-        let b = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
+        let a = any_quat_bits();
+        let b = any_quat_bits();
         let alpha: f32 = kani::any();
         // Precondition: something is NaN or infinite.
         kani::assume(!(a.is_finite() && b.is_finite() && alpha.is_finite()));
@@ -203,8 +211,7 @@ fn slerp_is_unit_for_every_finite_alpha() {
 fn slerp_is_exact_at_zero() {
     check("slerp_is_exact_at_zero", || {
         // Precondition: components within 2^60, so that b a^-1 is finite.
-        const LIMIT: f32 = 1.152_921_5e18;
-        let (a, b) = (any_quat_within(LIMIT), any_quat_within(LIMIT));
+        let (a, b) = (any_quat_within(TWO_TO_60), any_quat_within(TWO_TO_60));
         assert_law(laws::slerp_is_exact_at_zero(a, b));
     });
 }
@@ -247,7 +254,7 @@ fn blend_of_three_is_unit_or_identity() {
 fn quat_inverse_is_an_involution() {
     check("quat_inverse_is_an_involution", || {
         // No assumption: every bit pattern, NaN payloads included.
-        let q = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
+        let q = any_quat_bits();
         assert_law(laws::inverse_is_an_involution(q));
     });
 }
@@ -258,7 +265,7 @@ fn quat_inverse_is_an_involution() {
 fn quat_times_inverse_is_real() {
     check("quat_times_inverse_is_real", || {
         // Precondition: components within 2^60 (no overflow).
-        let q = any_quat_within(1.152_921_5e18);
+        let q = any_quat_within(TWO_TO_60);
         assert_law(laws::product_with_inverse_is_real(q));
     });
 }
@@ -269,7 +276,7 @@ fn quat_times_inverse_is_real() {
 fn cn_gives_non_negative_w_and_the_same_rotation() {
     check("cn_gives_non_negative_w_and_the_same_rotation", || {
         // No assumption: every bit pattern.
-        let q = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
+        let q = any_quat_bits();
         assert_law(laws::cn_gives_non_negative_w_and_the_same_rotation(q));
     });
 }
@@ -339,9 +346,8 @@ fn rigtform_matrix_moves_points_as_the_transform() {
 fn rigtform_interpolate_is_exact_at_zero() {
     check("rigtform_interpolate_is_exact_at_zero", || {
         // Precondition: components within 2^60.
-        const LIMIT: f32 = 1.152_921_5e18;
-        let a = RigTForm::new(any_vec_within(LIMIT), any_quat_within(LIMIT));
-        let b = RigTForm::new(any_vec_within(LIMIT), any_quat_within(LIMIT));
+        let a = RigTForm::new(any_vec_within(TWO_TO_60), any_quat_within(TWO_TO_60));
+        let b = RigTForm::new(any_vec_within(TWO_TO_60), any_quat_within(TWO_TO_60));
         assert_law(laws::interpolate_is_exact_at_zero(a, b));
     });
 }

@@ -54,12 +54,20 @@ pub const TWO_STEP_NORM_TOL: f64 = 2.0 * ONE_STEP_NORM_TOL;
 
 /// Relative error allowed in a translation that went through a rotation
 /// and back (`a * a.inv()`, `a.inv().inv()`): two rotations, each within
-/// [`ROTATE_MAX_REL_ERROR`] (measured), times four for the worst case.
-pub const TRANSLATION_REL_TOL: f64 = 8.0 * ROTATE_MAX_REL_ERROR as f64;
+/// [`ROTATE_MAX_REL_ERROR`] (measured), times four for the worst case, plus
+/// what a rotation quaternion off unit by [`ONE_STEP_NORM_TOL`] does to
+/// lengths (`2 |norm^2 - 1|` per rotation; with `fast-math`, whose
+/// rotations are unit only to about 1e-3, this term dominates).
+pub const TRANSLATION_REL_TOL: f64 = 4.0 * ONE_STEP_NORM_TOL + 8.0 * ROTATE_MAX_REL_ERROR as f64;
 
 /// Absolute slack for results that should be zero or equal, in units of the
 /// inputs' magnitude: below this, products of tiny components underflow.
 const UNDERFLOW_SLACK: f64 = 1e-36;
+
+/// A relative tolerance applied to a magnitude, plus the underflow slack.
+fn relative(tol: f64, magnitude: f64) -> f64 {
+    tol * magnitude + UNDERFLOW_SLACK
+}
 
 fn norm2(q: Quat) -> f64 {
     let [w, x, y, z] = [q.w, q.x, q.y, q.z].map(f64::from);
@@ -77,6 +85,13 @@ fn vnorm2(v: Cvec3) -> f64 {
 /// The 1-norm, in f64: an upper bound of the length without a square root.
 fn vnorm1(v: Cvec3) -> f64 {
     f64::from(v.x).abs() + f64::from(v.y).abs() + f64::from(v.z).abs()
+}
+
+/// The slerp angle error allowed for a turn of `theta` radians: the
+/// documented bound per radian turned (at least one radian), doubled for
+/// the error of measuring angles with `angle_to`.
+fn slerp_angle_tol(theta: f64) -> f64 {
+    2.0 * f64::from(rigtform::accuracy::SLERP_MAX_ANGLE_ERROR) * theta.max(1.0)
 }
 
 fn within(law: &'static str, measured: f64, bound: f64) -> Verdict {
@@ -115,6 +130,7 @@ pub fn product_norm_is_multiplicative(a: Quat, b: Quat) -> Verdict {
     within(
         "product_norm_is_multiplicative",
         (got - want).abs(),
+        // No underflow slack: the precondition keeps the norms normal.
         ONE_STEP_NORM_TOL * want,
     )
 }
@@ -131,7 +147,7 @@ pub fn rotation_preserves_length(q: Quat, v: Cvec3) -> Verdict {
     within(
         "rotation_preserves_length",
         (vnorm2(q * v) - len2).abs(),
-        (2.0 * b + b * b) * len2 + UNDERFLOW_SLACK,
+        relative(2.0 * b + b * b, len2),
     )
 }
 
@@ -202,12 +218,22 @@ pub fn slerp_is_exact_at_zero(a: Quat, b: Quat) -> Verdict {
 pub fn slerp_turns_by_alpha_times_the_angle(a: Quat, b: Quat, alpha: f32) -> Verdict {
     let theta = a.angle_to(b);
     let turned = a.angle_to(a.slerp(b, alpha));
-    let tol =
-        2.0 * f64::from(rigtform::accuracy::SLERP_MAX_ANGLE_ERROR) * f64::from(theta).max(1.0);
     within(
         "slerp_turns_by_alpha_times_the_angle",
         (f64::from(turned) - f64::from(alpha) * f64::from(theta)).abs(),
-        tol,
+        slerp_angle_tol(theta.into()),
+    )
+}
+
+/// `slerp(a, b, 1)` is the rotation of `b` (possibly as `-b`), to within
+/// the documented slerp error, doubled for the error of measuring the angle.
+///
+/// Preconditions: `a` and `b` unit to [`ONE_STEP_NORM_TOL`].
+pub fn slerp_reaches_the_rotation_of_b_at_one(a: Quat, b: Quat) -> Verdict {
+    within(
+        "slerp_reaches_the_rotation_of_b_at_one",
+        f64::from(a.slerp(b, 1.0).angle_to(b)),
+        slerp_angle_tol(a.angle_to(b).into()),
     )
 }
 
@@ -257,7 +283,7 @@ pub fn inverse_is_an_involution(q: Quat) -> Verdict {
 pub fn product_with_inverse_is_real(q: Quat) -> Verdict {
     let r = q * q.inv();
     let n2 = norm2(q);
-    let tol = ONE_STEP_NORM_TOL * n2 + UNDERFLOW_SLACK;
+    let tol = relative(ONE_STEP_NORM_TOL, n2);
     within(
         "product_with_inverse_is_real (vector part, squared)",
         vnorm2(r.vector()),
@@ -299,7 +325,7 @@ pub fn rigid_product_with_inverse_is_identity(a: RigTForm) -> Verdict {
     within(
         "rigid_product_with_inverse_is_identity (squared)",
         vnorm2(p.t),
-        TRANSLATION_REL_TOL * TRANSLATION_REL_TOL * vnorm2(a.t) + UNDERFLOW_SLACK,
+        relative(TRANSLATION_REL_TOL * TRANSLATION_REL_TOL, vnorm2(a.t)),
     )
 }
 
@@ -317,13 +343,13 @@ pub fn rigid_inverse_is_an_involution(a: RigTForm) -> Verdict {
     within(
         "rigid_inverse_is_an_involution (squared)",
         vnorm2(b.t - a.t),
-        TRANSLATION_REL_TOL * TRANSLATION_REL_TOL * vnorm2(a.t) + UNDERFLOW_SLACK,
+        relative(TRANSLATION_REL_TOL * TRANSLATION_REL_TOL, vnorm2(a.t)),
     )
 }
 
 /// `RigTForm::inv` agrees with `Matrix4::inverse`: the matrix of `a.inv()`
 /// equals the inverse of the matrix of `a`, entry by entry, within
-/// `8 INVERSE_MAX_REL_ERROR (1 + |t|_1)` (the cofactor inverse of a rigid
+/// `(8 INVERSE_MAX_REL_ERROR + 4 ONE_STEP_NORM_TOL) (1 + |t|_1)` (the cofactor inverse of a rigid
 /// matrix has a unit determinant and its translation column is three
 /// triple products with `t`).
 ///
@@ -340,7 +366,10 @@ pub fn rigid_inverse_matches_matrix_inverse(a: RigTForm) -> Verdict {
         .zip(want)
         .map(|(&x, y)| (f64::from(x) - f64::from(y)).abs())
         .fold(0.0, f64::max);
-    let tol = 8.0 * f64::from(INVERSE_MAX_REL_ERROR) * (1.0 + vnorm1(a.t));
+    // Plus what a rotation off unit does: its matrix is then no longer
+    // orthogonal, and the conjugate no longer its exact inverse.
+    let tol =
+        (8.0 * f64::from(INVERSE_MAX_REL_ERROR) + 4.0 * ONE_STEP_NORM_TOL) * (1.0 + vnorm1(a.t));
     within("rigid_inverse_matches_matrix_inverse", worst, tol)
 }
 
@@ -364,7 +393,7 @@ pub fn rigid_matrix_moves_points_as_the_transform(a: RigTForm, c: Cvec4) -> Verd
     within(
         "rigid_matrix_moves_points_as_the_transform",
         worst,
-        tol + UNDERFLOW_SLACK,
+        relative(tol, 1.0),
     )
 }
 
@@ -409,6 +438,7 @@ mod tests {
         assert_eq!(slerp_is_unit(a, -a, 0.5), Ok(()));
         assert_eq!(slerp_is_exact_at_zero(a, b), Ok(()));
         assert_eq!(slerp_turns_by_alpha_times_the_angle(a, b, 0.25), Ok(()));
+        assert_eq!(slerp_reaches_the_rotation_of_b_at_one(a, -b), Ok(()));
         assert_eq!(nlerp_is_unit(a, -b, 0.5), Ok(()));
         assert_eq!(blend_is_unit_or_identity(&[(a, 1.0), (b, 2.0)]), Ok(()));
         assert_eq!(blend_is_unit_or_identity(&[(a, 1.0), (a, -1.0)]), Ok(()));
@@ -438,6 +468,7 @@ mod tests {
         assert!(slerp_of_non_finite_is_nan(a, a, 0.5).is_err());
         assert!(slerp_is_unit(scaled, a, 0.5).is_err());
         assert!(slerp_turns_by_alpha_times_the_angle(a, -a.inv(), 3.0).is_err());
+        assert!(slerp_reaches_the_rotation_of_b_at_one(a, Quat::NAN).is_err());
         assert!(nlerp_is_unit(Quat::NAN, a, 0.5).is_err());
         assert!(blend_is_unit_or_identity(&[(scaled, 1.0)]).is_ok()); // normalized
         assert!(blend_is_unit_or_identity(&[(a, f32::NAN)]).is_err());
@@ -451,5 +482,63 @@ mod tests {
         let err = product_norm_is_multiplicative(a, Quat::NAN).unwrap_err();
         assert_eq!(err.law, "product_norm_is_multiplicative");
         assert!(err.measured.is_nan());
+    }
+
+    #[cfg(not(feature = "fast-math"))]
+    #[test]
+    fn tolerances_follow_their_derivation() {
+        let u = 1.0 / 16_777_216.0; // 2^-24
+        let unit = f64::from(UNIT_NORM_ERROR);
+        let rotate = f64::from(ROTATE_MAX_REL_ERROR);
+        assert_eq!(ONE_STEP_NORM_TOL, 4.0 * unit);
+        assert_eq!(TWO_STEP_NORM_TOL, 8.0 * unit);
+        assert_eq!(TRANSLATION_REL_TOL, 16.0 * unit + 8.0 * rotate);
+        // The worst case of a product's squared norm, 16u, fits under the
+        // one-step tolerance, and the tolerance is not much looser.
+        assert!((16.0 * u..=32.0 * u).contains(&ONE_STEP_NORM_TOL));
+        let s = f64::from(rigtform::accuracy::SLERP_MAX_ANGLE_ERROR);
+        assert_eq!(slerp_angle_tol(0.5), 2.0 * s);
+        assert_eq!(slerp_angle_tol(3.0), 6.0 * s);
+        assert_eq!(relative(2.0, 3.0), 6.0 + UNDERFLOW_SLACK);
+    }
+
+    #[test]
+    fn the_length_law_fails_just_beyond_its_bound() {
+        // A half turn about x scaled by s acts on y as 1 - 2 s^2: with
+        // s^2 = 1 + d, the squared length grows by about 4 d.
+        let b = 2.0 * ONE_STEP_NORM_TOL + 4.0 * f64::from(ROTATE_MAX_REL_ERROR);
+        let at = |d: f64| {
+            let s = (1.0 + d).sqrt() as f32;
+            rotation_preserves_length(Quat::new(0.0, s, 0.0, 0.0), Cvec3::Y)
+        };
+        assert_eq!(at(0.2 * b), Ok(()));
+        assert!(at(1.0 * b).is_err());
+    }
+
+    #[test]
+    fn the_product_law_fails_where_products_underflow() {
+        // Outside the precondition: the product of two 1e-30 quaternions
+        // underflows to zero, and its norm is no longer the product of norms.
+        let tiny = Quat::new(1e-30, 1e-30, 0.0, 0.0);
+        assert!(product_norm_is_multiplicative(tiny, tiny).is_err());
+    }
+
+    #[test]
+    fn helpers_compare_every_component() {
+        assert!(is_nan_quat(Quat::NAN));
+        for k in 0..4 {
+            let mut c = [f32::NAN; 4];
+            c[k] = 0.0;
+            assert!(!is_nan_quat(Quat::new(c[0], c[1], c[2], c[3])));
+            let mut d = [1.0f32; 4];
+            d[k] = -1.0;
+            let q = Quat::new(d[0], d[1], d[2], d[3]);
+            assert!(!same_bits(q, Quat::new(1.0, 1.0, 1.0, 1.0)));
+        }
+        assert!(!same_bits(
+            Quat::new(0.0, 0.0, 0.0, 0.0),
+            Quat::new(-0.0, 0.0, 0.0, 0.0)
+        ));
+        assert!(same_bits(Quat::NAN, Quat::NAN));
     }
 }

@@ -121,9 +121,22 @@ mod tests {
     #[test]
     fn slerp_takes_the_short_way_and_angles_ignore_sign() {
         let a = Quat64::from(Quat::IDENTITY);
-        let b = Quat64::from(-Quat::from_rotation_x(0.5)); // w < 0: same rotation
-        let mid = Quat64::slerp(a, b, 0.5);
-        assert!((Quat64::angle_between(mid, a) - 0.25).abs() < 1e-7);
-        assert!(Quat64::angle_between(b, Quat64::from(Quat::from_rotation_x(0.5))) < 1e-7);
+        let half_turn_x = |angle: f64| Quat64 {
+            w: libm::cos(angle / 2.0),
+            x: libm::sin(angle / 2.0),
+            y: 0.0,
+            z: 0.0,
+        };
+        let b = half_turn_x(0.5);
+        let minus_b = Quat64 {
+            w: -b.w,
+            x: -b.x,
+            y: -b.y,
+            z: -b.z,
+        }; // w < 0: same rotation
+        let mid = Quat64::slerp(a, minus_b, 0.5);
+        assert!((Quat64::angle_between(mid, a) - 0.25).abs() < 1e-12);
+        assert!(Quat64::angle_between(mid, half_turn_x(0.25)) < 1e-12);
+        assert!(Quat64::angle_between(minus_b, b) < 1e-12);
     }
 }

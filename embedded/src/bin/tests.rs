@@ -177,6 +177,11 @@ fn main() -> ! {
             laws::slerp_is_exact_at_zero(a, b)
         })
     });
+    t.check("slerp_reaches_the_rotation_of_b_at_one", || {
+        each(unit_pairs(24).chain(degenerate_pairs(25)), |(a, b)| {
+            laws::slerp_reaches_the_rotation_of_b_at_one(a, b)
+        })
+    });
     t.check("slerp_turns_by_alpha_times_the_angle", || {
         let mut d = Draws::new(7);
         each(unit_pairs(8).chain(degenerate_pairs(9)), |(a, b)| {

@@ -1,0 +1,408 @@
+//! The demo: one pair of keyframes, interpolated side by side by the notes'
+//! three methods, and by Euler angles and slerp in a rotated world frame
+//! (left invariance), each panel seen by the same sky camera over a
+//! checkered ground, with the paths of the frame's origin and axis tips
+//! marked.
+
+use rigtform::{Cvec3, Cvec4, Quat, RigTForm};
+
+use crate::image::{Image, GLYPH_SIZE};
+use crate::interpolation::Method;
+use crate::mesh::Mesh;
+use crate::scene::{Camera, Draw, Scene, Settings};
+use crate::vertex::Frame;
+
+/// Which panels a demo frame shows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum Comparison {
+    /// All five panels.
+    #[default]
+    All,
+    /// Matrix lerp, Euler lerp and slerp.
+    Interpolation,
+    /// Euler lerp and slerp, each in the world frame and in a rotated one.
+    Invariance,
+    /// Slerp alone.
+    Slerp,
+}
+
+/// One panel: a method, and the world frame it interpolates in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Panel {
+    /// The title drawn above the panel.
+    pub title: &'static str,
+    /// The interpolation method.
+    pub method: Method,
+    /// `G` of the world frame `w' = w G` the method works in.
+    pub world: RigTForm,
+}
+
+/// The rotated world frame of the invariance panels: tipped 90 degrees
+/// about the z axis, then turned 60 degrees about the new vertical.
+#[must_use]
+pub fn rotated_world() -> RigTForm {
+    RigTForm::from_rotation(
+        Quat::from_rotation_z(core::f32::consts::FRAC_PI_2) * Quat::from_rotation_x(1.0),
+    )
+}
+
+impl Comparison {
+    /// The panels, left to right.
+    #[must_use]
+    pub fn panels(self) -> Vec<Panel> {
+        let panel = |title, method, world| Panel {
+            title,
+            method,
+            world,
+        };
+        let (w, g) = (RigTForm::IDENTITY, rotated_world());
+        let matrix = panel("MATRIX LERP", Method::MatrixLerp, w);
+        let euler = panel("EULER LERP", Method::EulerLerp, w);
+        let slerp = panel("SLERP", Method::Slerp, w);
+        let euler_g = panel("EULER, WORLD TURNED", Method::EulerLerp, g);
+        let slerp_g = panel("SLERP, WORLD TURNED", Method::Slerp, g);
+        match self {
+            Comparison::All => vec![matrix, euler, slerp, euler_g, slerp_g],
+            Comparison::Interpolation => vec![matrix, euler, slerp],
+            Comparison::Invariance => vec![euler, euler_g, slerp, slerp_g],
+            Comparison::Slerp => vec![slerp],
+        }
+    }
+}
+
+/// Length of the body's axes, and so where the tips are marked.
+pub const ARM: f32 = 1.1;
+/// Marks along each path, from `alpha = 0` to 1.
+pub const TRAIL_MARKS: u32 = 16;
+
+/// The two keyframes: the second is moved across the ground and turned a
+/// further 150 degrees about a tilted axis.
+///
+/// ```
+/// let (k0, k1) = rigtform_render::demo::keyframes();
+/// assert!((k0.r.angle_to(k1.r).to_degrees() - 150.0).abs() < 1e-3);
+/// ```
+#[must_use]
+pub fn keyframes() -> (RigTForm, RigTForm) {
+    let r0 = Quat::from_rotation_y(0.4) * Quat::from_rotation_x(-0.25);
+    let k0 = RigTForm::new(Cvec3::new(-1.9, 1.2, 0.3), r0);
+    let turn = Quat::from_axis_angle(Cvec3::new(0.3, 1.0, 0.9), 150f32.to_radians());
+    let k1 = RigTForm::new(Cvec3::new(1.9, 1.2, -0.6), turn * r0);
+    (k0, k1)
+}
+
+/// The demo: its meshes, keyframes, panels and camera.
+#[derive(Clone, Debug)]
+pub struct Demo {
+    body: Mesh,
+    ground: Mesh,
+    marker: Mesh,
+    keyframes: (RigTForm, RigTForm),
+    panels: Vec<Panel>,
+    camera: Camera,
+}
+
+/// Colours of the path marks: origin, x tip, y tip, z tip.
+const MARK_COLORS: [[f32; 3]; 4] = [
+    [0.9, 0.8, 0.2],
+    [0.9, 0.15, 0.1],
+    [0.15, 0.75, 0.15],
+    [0.15, 0.3, 0.95],
+];
+/// Body-frame points whose paths are marked.
+const MARKED: [Cvec3; 4] = [
+    Cvec3::ZERO,
+    Cvec3::new(ARM, 0.0, 0.0),
+    Cvec3::new(0.0, ARM, 0.0),
+    Cvec3::new(0.0, 0.0, ARM),
+];
+
+/// Colour of label bars and gaps.
+const BAR: [u8; 3] = [24, 24, 28];
+
+/// Height of the two-line label bar above each panel.
+pub const LABEL_BAR: u32 = 2 * GLYPH_SIZE + 8;
+
+impl Demo {
+    /// The demo with the given panels, drawing `body` (by default the axes
+    /// body, [`Mesh::axes`]) at the animated frame.
+    #[must_use]
+    pub fn new(comparison: Comparison, body: Option<Mesh>) -> Self {
+        Self {
+            body: body.unwrap_or_else(|| Mesh::axes(ARM)),
+            ground: Mesh::ground(
+                [-8.0, 8.0],
+                [-12.0, 4.0],
+                16,
+                [[0.32, 0.36, 0.3], [0.5, 0.54, 0.46]],
+            ),
+            marker: Mesh::sphere(0.07, 10, 6, [1.0; 3]),
+            keyframes: keyframes(),
+            panels: comparison.panels(),
+            camera: Camera::looking_at(Cvec3::new(0.0, 3.0, 5.4), Cvec3::new(0.0, 1.1, -0.2), 0.8),
+        }
+    }
+
+    /// The panels, left to right.
+    #[must_use]
+    pub fn panels(&self) -> &[Panel] {
+        &self.panels
+    }
+
+    /// The interpolation parameter of frame `i` of `n`: 0 to 1 inclusive.
+    #[must_use]
+    pub fn alpha(i: u32, n: u32) -> f32 {
+        if n < 2 {
+            0.0
+        } else {
+            i as f32 / (n - 1) as f32
+        }
+    }
+
+    /// The object frame a panel draws at `alpha`.
+    #[must_use]
+    pub fn object_frame(&self, panel: &Panel, alpha: f32) -> Frame {
+        let (k0, k1) = self.keyframes;
+        panel.method.frame(k0, k1, panel.world, alpha)
+    }
+
+    /// The scene of one panel at `alpha`: ground, body, and path marks
+    /// (coloured up to `alpha`, grey beyond).
+    #[must_use]
+    pub fn scene(&self, panel: &Panel, alpha: f32) -> Scene<'_> {
+        let mut draws = vec![Draw {
+            mesh: &self.ground,
+            frame: Frame::Rigid(RigTForm::IDENTITY),
+            scale: Cvec3::new(1.0, 1.0, 1.0),
+            tint: [1.0; 3],
+        }];
+        for k in 0..=TRAIL_MARKS {
+            let a = k as f32 / TRAIL_MARKS as f32;
+            let frame = self.object_frame(panel, a);
+            for (point, color) in MARKED.iter().zip(MARK_COLORS) {
+                let p = apply(frame, *point);
+                // Marks already passed in colour, those ahead small and grey.
+                let (size, tint) = if a <= alpha + 1e-6 {
+                    (1.0, color)
+                } else {
+                    (0.6, [0.25; 3])
+                };
+                draws.push(Draw {
+                    mesh: &self.marker,
+                    frame: Frame::Rigid(RigTForm::from_translation(p)),
+                    scale: Cvec3::new(size, size, size),
+                    tint,
+                });
+            }
+        }
+        draws.push(Draw {
+            mesh: &self.body,
+            frame: self.object_frame(panel, alpha),
+            scale: Cvec3::new(1.0, 1.0, 1.0),
+            tint: [1.0; 3],
+        });
+        Scene {
+            camera: self.camera,
+            lights: [Cvec3::new(4.0, 8.0, 6.0), Cvec3::new(-6.0, 3.0, -2.0)],
+            intensity: [0.75, 0.3],
+            background: [0.42, 0.6, 0.85],
+            draws,
+        }
+    }
+
+    /// The second label line of a panel at `alpha`: a measure of what the
+    /// method does there.
+    ///
+    /// ```
+    /// use rigtform_render::demo::{Comparison, Demo};
+    /// let demo = Demo::new(Comparison::Interpolation, None);
+    /// assert_eq!(demo.caption(&demo.panels()[2], 1.0), "turned 150.0 deg");
+    /// ```
+    #[must_use]
+    pub fn caption(&self, panel: &Panel, alpha: f32) -> String {
+        let slerp = self.object_frame(
+            &Panel {
+                method: Method::Slerp,
+                world: RigTForm::IDENTITY,
+                ..*panel
+            },
+            alpha,
+        );
+        let in_world = self.object_frame(
+            &Panel {
+                world: RigTForm::IDENTITY,
+                ..*panel
+            },
+            alpha,
+        );
+        match (panel.method, self.object_frame(panel, alpha)) {
+            (Method::MatrixLerp, Frame::Matrix(m)) => {
+                let [a, b, c, _] = m.cols.map(Cvec4::xyz);
+                format!("volume x{:.2}", a.dot(b.cross(c)))
+            }
+            (_, Frame::Rigid(f)) if panel.world != RigTForm::IDENTITY => {
+                let Frame::Rigid(w) = in_world else {
+                    return String::new();
+                };
+                format!("{:5.1} deg off world's", f.r.angle_to(w.r).to_degrees())
+            }
+            (Method::EulerLerp, Frame::Rigid(f)) => {
+                let Frame::Rigid(s) = slerp else {
+                    return String::new();
+                };
+                format!("{:5.1} deg off slerp", f.r.angle_to(s.r).to_degrees())
+            }
+            (_, Frame::Rigid(f)) => {
+                let k0 = self.keyframes.0;
+                format!("turned {:5.1} deg", f.r.angle_to(k0.r).to_degrees())
+            }
+            _ => String::new(),
+        }
+    }
+
+    /// One frame of the animation: the panels side by side, each `width x
+    /// height` under a label bar.
+    ///
+    /// ```
+    /// use rigtform_render::demo::{Comparison, Demo, LABEL_BAR};
+    /// use rigtform_render::{Cull, Msaa, Settings};
+    /// let demo = Demo::new(Comparison::Interpolation, None);
+    /// let settings = Settings { width: 32, height: 24, msaa: Msaa::Off, cull: Cull::Back };
+    /// let frame = demo.render_frame(0.5, &settings);
+    /// assert_eq!((frame.width(), frame.height()), (3 * 32 + 2 * 4, 24 + LABEL_BAR));
+    /// ```
+    #[must_use]
+    pub fn render_frame(&self, alpha: f32, settings: &Settings) -> Image {
+        let (w, h) = (settings.width, settings.height);
+        let gap = 4;
+        let n = self.panels.len() as u32;
+        let mut frame = Image::new(n * w + (n - 1) * gap, h + LABEL_BAR, BAR);
+        for (i, panel) in self.panels.iter().enumerate() {
+            let x = i64::from(i as u32 * (w + gap));
+            frame.blit(
+                &self.scene(panel, alpha).render(settings),
+                x,
+                i64::from(LABEL_BAR),
+            );
+            // Labels are cut at the panel's edge.
+            let mut label = Image::new(w, LABEL_BAR, BAR);
+            label.draw_text(4, 3, panel.title, 1, [240, 240, 240]);
+            let caption = self.caption(panel, alpha);
+            label.draw_text(4, 5 + i64::from(GLYPH_SIZE), &caption, 1, [200, 200, 160]);
+            frame.blit(&label, x, 0);
+        }
+        frame
+    }
+}
+
+/// A frame's point `p` in world coordinates.
+fn apply(frame: Frame, p: Cvec3) -> Cvec3 {
+    let p = Cvec4::from_point(p);
+    match frame {
+        Frame::Rigid(r) => (r * p).xyz(),
+        Frame::Matrix(m) => (m * p).xyz(),
+    }
+}
+
+/// Stacks frames into one picture, each row labelled with its `alpha` in
+/// a margin on the left.
+#[must_use]
+pub fn contact_sheet(rows: &[(f32, &Image)]) -> Image {
+    let margin = 8 * 11 + 8;
+    let gap = 4;
+    let width = rows.iter().map(|(_, im)| im.width()).max().unwrap_or(0) + margin;
+    let height = rows.iter().map(|(_, im)| im.height() + gap).sum::<u32>();
+    let mut sheet = Image::new(width, height, BAR);
+    let mut y = 0i64;
+    for (alpha, image) in rows {
+        sheet.blit(image, i64::from(margin), y);
+        let mid = y + i64::from(image.height() / 2);
+        sheet.draw_text(4, mid - 10, "alpha", 1, [200, 200, 200]);
+        sheet.draw_text(4, mid + 2, &format!("{alpha:.3}"), 2, [240, 240, 240]);
+        y += i64::from(image.height() + gap);
+    }
+    sheet
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The demo's slerp motion read back from the frames it renders has the
+    /// notes' properties: the origin moves on a straight line at constant
+    /// speed, and the frame turns about one fixed axis at constant angular
+    /// velocity.
+    #[test]
+    fn demo_slerp_motion_is_straight_and_uniform() {
+        let demo = Demo::new(Comparison::All, None);
+        let panel = demo.panels()[2];
+        assert_eq!(panel.method, Method::Slerp);
+        let n = 24;
+        let frames: Vec<RigTForm> = (0..n)
+            .map(|i| match demo.object_frame(&panel, Demo::alpha(i, n)) {
+                Frame::Rigid(r) => r,
+                Frame::Matrix(_) => panic!("slerp gives rigid frames"),
+            })
+            .collect();
+        let (k0, k1) = keyframes();
+        let step = (k1.t - k0.t) * (1.0 / (n - 1) as f32);
+        let (_, total) = (k1.r * k0.r.inv()).to_axis_angle();
+        let (axis, _) = (k1.r * k0.r.inv()).to_axis_angle();
+        for pair in frames.windows(2) {
+            let (a, b) = (pair[0], pair[1]);
+            assert!(
+                (b.t - a.t - step).norm() < 1e-5,
+                "straight line, constant speed"
+            );
+            let (turn_axis, turn) = (b.r * a.r.inv()).to_axis_angle();
+            assert!(
+                (turn - total / (n - 1) as f32).abs() < 1e-4,
+                "constant angular velocity"
+            );
+            assert!(turn_axis.dot(axis) > 1.0 - 1e-4, "one fixed axis");
+        }
+        assert!(frames[0].r.angle_to(k0.r) < 1e-6);
+        assert!(frames[n as usize - 1].r.angle_to(k1.r) < 1e-5);
+        assert!((total.to_degrees() - 150.0).abs() < 1e-3);
+    }
+
+    #[test]
+    fn matrix_lerp_panel_shrinks_halfway() {
+        let demo = Demo::new(Comparison::Interpolation, None);
+        let caption = demo.caption(&demo.panels()[0], 0.5);
+        // cos(75 degrees)^2 = 0.067: the plane of the turn collapses.
+        assert_eq!(caption, "volume x0.07");
+        assert_eq!(demo.caption(&demo.panels()[0], 0.0), "volume x1.00");
+    }
+
+    #[test]
+    fn rotated_world_changes_euler_but_not_slerp() {
+        let demo = Demo::new(Comparison::Invariance, None);
+        let titles: Vec<_> = demo.panels().iter().map(|p| p.title).collect();
+        assert_eq!(titles[1], "EULER, WORLD TURNED");
+        let euler_g = demo.caption(&demo.panels()[1], 0.5);
+        let slerp_g = demo.caption(&demo.panels()[3], 0.5);
+        assert_eq!(slerp_g, "  0.0 deg off world's");
+        let euler_off: f32 = euler_g.split_whitespace().next().unwrap().parse().unwrap();
+        assert!(euler_off > 10.0, "{euler_g}");
+    }
+
+    #[test]
+    fn alpha_runs_from_zero_to_one() {
+        assert_eq!(Demo::alpha(0, 5), 0.0);
+        assert_eq!(Demo::alpha(2, 5), 0.5);
+        assert_eq!(Demo::alpha(4, 5), 1.0);
+        assert_eq!(Demo::alpha(0, 1), 0.0);
+    }
+
+    #[test]
+    fn contact_sheet_stacks_rows_under_each_other() {
+        let a = Image::new(10, 6, [255, 0, 0]);
+        let b = Image::new(10, 6, [0, 0, 255]);
+        let sheet = contact_sheet(&[(0.0, &a), (1.0, &b)]);
+        assert_eq!(sheet.height(), 2 * (6 + 4));
+        let margin = sheet.width() - 10;
+        assert_eq!(sheet.pixel(margin, 0), [255, 0, 0]);
+        assert_eq!(sheet.pixel(margin, 10), [0, 0, 255]);
+    }
+}

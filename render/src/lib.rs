@@ -1,0 +1,69 @@
+//! A host-side software rasterizer for `rigtform`, and the demo it renders:
+//! keyframe animation of [`RigTForm`](rigtform::RigTForm)s, slerp against
+//! the lecture notes' "bad ideas" (lerping matrices, lerping Euler angles).
+//!
+//! One file per pipeline stage, in the order a triangle meets them:
+//!
+//! 1. [`mesh`]: built-in meshes (cube, sphere, ground, axes body) and OBJ
+//!    files (with `tobj`).
+//! 2. [`vertex`]: `MVM = Matrix4::from(inv(eyeRbt) * objRbt) * scale`,
+//!    `NMVM = normal_matrix(MVM)`, clip = `projection * MVM * p`.
+//! 3. [`clip`]: the near plane (and a guard band), in clip space.
+//! 4. [`viewport`]: perspective divide and viewport.
+//! 5. [`raster`]: triangle setup, back-face culling, exact fixed-point edge
+//!    functions with a top-left fill rule, 4x MSAA coverage, the depth test,
+//!    perspective-correct attributes.
+//! 6. [`shade`]: per-pixel diffuse and specular lighting (the CS175 model).
+//! 7. [`framebuffer`]: colour and depth samples, bands for threads, resolve.
+//! 8. [`image`] and [`output`]: images, labels, PNG and GIF files written
+//!    atomically.
+//!
+//! [`scene`] runs the stages, in parallel with `rayon` and with the same
+//! bytes out whatever the number of threads. [`euler`],
+//! [`interpolation`] and [`demo`] build the demo's animation and pictures.
+//!
+//! ```
+//! use rigtform::{Cvec3, Quat, RigTForm};
+//! use rigtform_render::{Camera, Cull, Draw, Frame, Mesh, Msaa, Scene, Settings};
+//!
+//! let cube = Mesh::cube(1.0, [0.8, 0.3, 0.1]);
+//! let scene = Scene {
+//!     camera: Camera::looking_at(Cvec3::new(2.0, 2.0, 4.0), Cvec3::ZERO, 0.8),
+//!     lights: [Cvec3::new(3.0, 5.0, 4.0), Cvec3::new(-4.0, 2.0, 1.0)],
+//!     intensity: [0.7, 0.3],
+//!     background: [0.5, 0.7, 0.9],
+//!     draws: vec![Draw {
+//!         mesh: &cube,
+//!         frame: Frame::Rigid(RigTForm::from_rotation(Quat::from_rotation_y(0.5))),
+//!         scale: Cvec3::new(1.0, 1.0, 1.0),
+//!         tint: [1.0; 3],
+//!     }],
+//! };
+//! let image = scene.render(&Settings { width: 64, height: 48, msaa: Msaa::X4, cull: Cull::Back });
+//! assert_ne!(image.pixel(32, 24), image.pixel(0, 0)); // the cube is in the middle
+//! ```
+
+pub mod clip;
+pub mod demo;
+pub mod euler;
+pub mod framebuffer;
+pub mod image;
+pub mod interpolation;
+pub mod mesh;
+pub mod output;
+pub mod raster;
+pub mod scene;
+pub mod shade;
+pub mod vertex;
+pub mod viewport;
+
+pub use clip::clip_triangle;
+pub use euler::Euler;
+pub use framebuffer::{linear_to_srgb8, Band, Framebuffer};
+pub use image::Image;
+pub use mesh::Mesh;
+pub use raster::{Cull, Msaa, Triangle};
+pub use scene::{Camera, Draw, Scene, Settings, Stats};
+pub use shade::Lighting;
+pub use vertex::{transform_vertices, ClipVertex, Frame, Transforms, ATTRIBUTES};
+pub use viewport::{to_screen, ScreenVertex};

@@ -1,0 +1,400 @@
+//! Triangle meshes: the built-in cube, sphere, ground plane and axes body,
+//! generated in code, and OBJ files loaded with `tobj`.
+
+use std::path::Path;
+
+use rigtform::Cvec3;
+
+/// An indexed triangle mesh in object coordinates.
+///
+/// Every vertex carries a position, a unit normal and a linear RGB colour;
+/// `triangles` index them three at a time, counter-clockwise seen from the
+/// outside (OpenGL's front faces).
+///
+/// ```
+/// use rigtform_render::Mesh;
+/// let cube = Mesh::cube(1.0, [0.8, 0.8, 0.8]);
+/// assert_eq!(cube.triangles.len(), 12);
+/// ```
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Mesh {
+    /// Vertex positions.
+    pub positions: Vec<Cvec3>,
+    /// Unit vertex normals, one per position.
+    pub normals: Vec<Cvec3>,
+    /// Linear RGB vertex colours in [0, 1], one per position.
+    pub colors: Vec<[f32; 3]>,
+    /// Counter-clockwise triangles, as indices into the vertex arrays.
+    pub triangles: Vec<[u32; 3]>,
+}
+
+impl Mesh {
+    /// Appends a vertex and returns its index.
+    fn push_vertex(&mut self, p: Cvec3, n: Cvec3, color: [f32; 3]) -> u32 {
+        let index = self.positions.len() as u32;
+        self.positions.push(p);
+        self.normals.push(n);
+        self.colors.push(color);
+        index
+    }
+
+    /// Appends the quad `a, b, c, d` (counter-clockwise) as two triangles with
+    /// the flat normal `n`.
+    fn push_quad(&mut self, [a, b, c, d]: [Cvec3; 4], n: Cvec3, color: [f32; 3]) {
+        let i = [a, b, c, d].map(|p| self.push_vertex(p, n, color));
+        self.triangles.push([i[0], i[1], i[2]]);
+        self.triangles.push([i[0], i[2], i[3]]);
+    }
+
+    /// An axis-aligned box centred on the origin with the given half extents,
+    /// flat shaded (24 vertices, 12 triangles).
+    ///
+    /// ```
+    /// use rigtform::Cvec3;
+    /// use rigtform_render::Mesh;
+    /// let b = Mesh::cuboid(Cvec3::new(1.0, 0.5, 0.25), [1.0, 0.0, 0.0]);
+    /// assert!(b.positions.iter().all(|p| p.x.abs() == 1.0 && p.y.abs() == 0.5));
+    /// ```
+    #[must_use]
+    pub fn cuboid(half: Cvec3, color: [f32; 3]) -> Self {
+        let mut mesh = Self::default();
+        // For each face: its outward normal and two in-face axes u, v with
+        // u x v = normal, so that the corners below run counter-clockwise.
+        let faces = [
+            (Cvec3::X, Cvec3::Y, Cvec3::Z),
+            (-Cvec3::X, Cvec3::Z, Cvec3::Y),
+            (Cvec3::Y, Cvec3::Z, Cvec3::X),
+            (-Cvec3::Y, Cvec3::X, Cvec3::Z),
+            (Cvec3::Z, Cvec3::X, Cvec3::Y),
+            (-Cvec3::Z, Cvec3::Y, Cvec3::X),
+        ];
+        let scale = |v: Cvec3| Cvec3::new(v.x * half.x, v.y * half.y, v.z * half.z);
+        for (n, u, v) in faces {
+            let corners = [n - u - v, n + u - v, n + u + v, n - u + v].map(scale);
+            mesh.push_quad(corners, n, color);
+        }
+        mesh
+    }
+
+    /// A cube of edge length `size` centred on the origin.
+    #[must_use]
+    pub fn cube(size: f32, color: [f32; 3]) -> Self {
+        let h = size * 0.5;
+        Self::cuboid(Cvec3::new(h, h, h), color)
+    }
+
+    /// A UV sphere of the given radius centred on the origin, smooth shaded,
+    /// with `slices` segments around the y axis and `stacks` from pole to pole.
+    ///
+    /// # Preconditions
+    ///
+    /// `slices >= 3` and `stacks >= 2`; smaller counts are raised to these.
+    ///
+    /// ```
+    /// use rigtform_render::Mesh;
+    /// let s = Mesh::sphere(2.0, 16, 8, [1.0; 3]);
+    /// assert!(s.positions.iter().all(|p| (p.norm() - 2.0).abs() < 1e-5));
+    /// ```
+    #[must_use]
+    pub fn sphere(radius: f32, slices: u32, stacks: u32, color: [f32; 3]) -> Self {
+        let (slices, stacks) = (slices.max(3), stacks.max(2));
+        let mut mesh = Self::default();
+        for i in 0..=stacks {
+            let theta = core::f32::consts::PI * i as f32 / stacks as f32;
+            for j in 0..=slices {
+                let phi = core::f32::consts::TAU * j as f32 / slices as f32;
+                let n = Cvec3::new(
+                    theta.sin() * phi.sin(),
+                    theta.cos(),
+                    theta.sin() * phi.cos(),
+                );
+                mesh.push_vertex(n * radius, n, color);
+            }
+        }
+        let row = slices + 1;
+        for i in 0..stacks {
+            for j in 0..slices {
+                let (a, b) = (i * row + j, (i + 1) * row + j);
+                // Skip the triangles that collapse to a point at the poles.
+                if i != 0 {
+                    mesh.triangles.push([a, b, a + 1]);
+                }
+                if i + 1 != stacks {
+                    mesh.triangles.push([a + 1, b, b + 1]);
+                }
+            }
+        }
+        mesh
+    }
+
+    /// A checkerboard ground plane at `y = 0` over `[x0, x1] x [z0, z1]`,
+    /// facing up, with `cells` squares along x (square cells, as many along z
+    /// as fit) alternating between the two colours.
+    ///
+    /// ```
+    /// use rigtform_render::Mesh;
+    /// let g = Mesh::ground([-2.0, 2.0], [-1.0, 1.0], 4, [[0.2; 3], [0.8; 3]]);
+    /// assert_eq!(g.triangles.len(), 4 * 2 * 2);
+    /// assert!(g.normals.iter().all(|n| n.y == 1.0));
+    /// ```
+    #[must_use]
+    pub fn ground(x: [f32; 2], z: [f32; 2], cells: u32, colors: [[f32; 3]; 2]) -> Self {
+        let mut mesh = Self::default();
+        let cells_x = cells.max(1);
+        let cell = (x[1] - x[0]) / cells_x as f32;
+        let cells_z = (((z[1] - z[0]) / cell).round() as u32).max(1);
+        let cell_z = (z[1] - z[0]) / cells_z as f32;
+        for i in 0..cells_x {
+            for k in 0..cells_z {
+                let (xa, xb) = (x[0] + cell * i as f32, x[0] + cell * (i + 1) as f32);
+                let (za, zb) = (z[0] + cell_z * k as f32, z[0] + cell_z * (k + 1) as f32);
+                let corners = [
+                    Cvec3::new(xa, 0.0, zb),
+                    Cvec3::new(xb, 0.0, zb),
+                    Cvec3::new(xb, 0.0, za),
+                    Cvec3::new(xa, 0.0, za),
+                ];
+                mesh.push_quad(corners, Cvec3::Y, colors[((i + k) % 2) as usize]);
+            }
+        }
+        mesh
+    }
+
+    /// The body that shows a frame: a grey cube at the origin and three arms
+    /// along its +x (red), +y (green) and +z (blue) axes, `length` long.
+    ///
+    /// ```
+    /// use rigtform_render::Mesh;
+    /// let body = Mesh::axes(1.5);
+    /// let reach = body.positions.iter().map(|p| p.x).fold(f32::MIN, f32::max);
+    /// assert!((reach - 1.5).abs() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn axes(length: f32) -> Self {
+        let thick = 0.09 * length;
+        let mut body = Self::cube(4.0 * thick, [0.75, 0.75, 0.72]);
+        let half = (length - thick) * 0.5;
+        let arms = [
+            (Cvec3::X, Cvec3::new(half, thick, thick), [0.85, 0.08, 0.06]),
+            (Cvec3::Y, Cvec3::new(thick, half, thick), [0.1, 0.7, 0.1]),
+            (Cvec3::Z, Cvec3::new(thick, thick, half), [0.08, 0.2, 0.9]),
+        ];
+        for (axis, extent, color) in arms {
+            body.append(&Self::cuboid(extent, color).translated(axis * (half + thick)));
+        }
+        body
+    }
+
+    /// The same mesh moved by `offset`.
+    #[must_use]
+    pub fn translated(mut self, offset: Cvec3) -> Self {
+        for p in &mut self.positions {
+            *p += offset;
+        }
+        self
+    }
+
+    /// Appends the vertices and triangles of `other`.
+    ///
+    /// ```
+    /// use rigtform::Cvec3;
+    /// use rigtform_render::Mesh;
+    /// let mut two = Mesh::cube(1.0, [1.0; 3]);
+    /// two.append(&Mesh::cube(1.0, [1.0; 3]).translated(Cvec3::X * 3.0));
+    /// assert_eq!(two.triangles.len(), 24);
+    /// assert_eq!(two.bounds().1.x, 3.5);
+    /// ```
+    pub fn append(&mut self, other: &Mesh) {
+        let base = self.positions.len() as u32;
+        self.positions.extend_from_slice(&other.positions);
+        self.normals.extend_from_slice(&other.normals);
+        self.colors.extend_from_slice(&other.colors);
+        self.triangles
+            .extend(other.triangles.iter().map(|t| t.map(|i| i + base)));
+    }
+
+    /// Loads every model of an OBJ file (with `tobj`, triangulated), coloured
+    /// `color`, centred on its bounding box and scaled so that its largest
+    /// extent is `size`. Vertices without normals get the area-weighted
+    /// average of their faces' normals.
+    ///
+    /// # Errors
+    ///
+    /// A message naming the file when it cannot be read or parsed, holds no
+    /// triangle, or has a non-finite coordinate.
+    ///
+    /// ```
+    /// use rigtform_render::Mesh;
+    /// let dir = std::env::temp_dir().join(format!("rigtform-doc-obj-{}", std::process::id()));
+    /// std::fs::create_dir_all(&dir).unwrap();
+    /// let path = dir.join("tri.obj");
+    /// std::fs::write(&path, "v 0 0 0\nv 4 0 0\nv 0 2 0\nf 1 2 3\n").unwrap();
+    /// let mesh = Mesh::load_obj(&path, 1.0, [1.0; 3]).unwrap();
+    /// assert_eq!(mesh.bounds().1.x, 0.5); // centred, the longest side now 1
+    /// std::fs::remove_dir_all(&dir).unwrap();
+    /// ```
+    pub fn load_obj(path: &Path, size: f32, color: [f32; 3]) -> Result<Self, String> {
+        let (models, _materials) = tobj::load_obj(path, &tobj::GPU_LOAD_OPTIONS)
+            .map_err(|e| format!("cannot load OBJ file {}: {e}", path.display()))?;
+        let mut mesh = Self::default();
+        for model in &models {
+            let m = &model.mesh;
+            let positions: Vec<Cvec3> = m
+                .positions
+                .chunks_exact(3)
+                .map(|p| Cvec3::new(p[0], p[1], p[2]))
+                .collect();
+            let mut part = Self {
+                normals: if m.normals.len() == m.positions.len() {
+                    m.normals
+                        .chunks_exact(3)
+                        .map(|n| Cvec3::new(n[0], n[1], n[2]).normalize())
+                        .collect()
+                } else {
+                    Vec::new()
+                },
+                colors: vec![color; positions.len()],
+                triangles: m
+                    .indices
+                    .chunks_exact(3)
+                    .map(|t| [t[0], t[1], t[2]])
+                    .collect(),
+                positions,
+            };
+            if part.normals.is_empty() {
+                part.normals = part.face_averaged_normals();
+            }
+            mesh.append(&part);
+        }
+        if mesh.triangles.is_empty() {
+            return Err(format!("OBJ file {} holds no triangle", path.display()));
+        }
+        if !mesh.positions.iter().all(|p| p.is_finite()) {
+            return Err(format!(
+                "OBJ file {} has a non-finite coordinate",
+                path.display()
+            ));
+        }
+        let (lo, hi) = mesh.bounds();
+        let extent = (hi - lo).to_array().into_iter().fold(0.0f32, f32::max);
+        let scale = if extent > 0.0 { size / extent } else { 1.0 };
+        let centre = (lo + hi) * 0.5;
+        for p in &mut mesh.positions {
+            *p = (*p - centre) * scale;
+        }
+        Ok(mesh)
+    }
+
+    /// Area-weighted vertex normals from the triangles (the cross product of
+    /// two edges is twice the area times the unit normal).
+    fn face_averaged_normals(&self) -> Vec<Cvec3> {
+        let mut normals = vec![Cvec3::ZERO; self.positions.len()];
+        for t in &self.triangles {
+            let [a, b, c] = t.map(|i| self.positions.get(i as usize).copied());
+            if let (Some(a), Some(b), Some(c)) = (a, b, c) {
+                let n = (b - a).cross(c - a);
+                for &i in t {
+                    normals[i as usize] += n;
+                }
+            }
+        }
+        normals.into_iter().map(Cvec3::normalize).collect()
+    }
+
+    /// The corners of the axis-aligned bounding box (zero for no vertex).
+    #[must_use]
+    pub fn bounds(&self) -> (Cvec3, Cvec3) {
+        let Some(&first) = self.positions.first() else {
+            return (Cvec3::ZERO, Cvec3::ZERO);
+        };
+        self.positions.iter().fold((first, first), |(lo, hi), p| {
+            (
+                Cvec3::new(lo.x.min(p.x), lo.y.min(p.y), lo.z.min(p.z)),
+                Cvec3::new(hi.x.max(p.x), hi.y.max(p.y), hi.z.max(p.z)),
+            )
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Twice the signed volume enclosed, from the divergence theorem: only a
+    /// closed, consistently outward-wound mesh gives the solid's volume.
+    fn enclosed_volume(mesh: &Mesh) -> f32 {
+        mesh.triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
+                a.dot(b.cross(c)) / 6.0
+            })
+            .sum()
+    }
+
+    #[test]
+    fn cube_is_closed_and_wound_outward() {
+        let v = enclosed_volume(&Mesh::cube(2.0, [1.0; 3]));
+        assert!((v - 8.0).abs() < 1e-5, "volume {v}");
+    }
+
+    #[test]
+    fn cube_face_normals_agree_with_winding() {
+        let cube = Mesh::cube(1.0, [1.0; 3]);
+        for t in &cube.triangles {
+            let [a, b, c] = t.map(|i| cube.positions[i as usize]);
+            let n = (b - a).cross(c - a).normalize();
+            assert!((n - cube.normals[t[0] as usize]).norm() < 1e-6);
+        }
+    }
+
+    #[test]
+    fn sphere_is_closed_and_wound_outward() {
+        let v = enclosed_volume(&Mesh::sphere(1.0, 64, 32, [1.0; 3]));
+        let exact = 4.0 / 3.0 * core::f32::consts::PI;
+        assert!(v > 0.98 * exact && v < exact, "volume {v}");
+    }
+
+    #[test]
+    fn ground_faces_up() {
+        let g = Mesh::ground([-1.0, 1.0], [-1.0, 1.0], 2, [[0.0; 3], [1.0; 3]]);
+        for t in &g.triangles {
+            let [a, b, c] = t.map(|i| g.positions[i as usize]);
+            assert!((b - a).cross(c - a).y > 0.0);
+        }
+    }
+
+    #[test]
+    fn axes_body_is_closed_and_reaches_its_length() {
+        let body = Mesh::axes(2.0);
+        assert!(enclosed_volume(&body) > 0.0);
+        let (lo, hi) = body.bounds();
+        assert!((hi - Cvec3::new(2.0, 2.0, 2.0)).norm() < 1e-6);
+        assert!(lo.x < 0.0 && lo.x > -0.5);
+    }
+
+    #[test]
+    fn obj_loads_centred_and_scaled_with_computed_normals() {
+        let dir = std::env::temp_dir().join(format!("rigtform-obj-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("tetra.obj");
+        std::fs::write(
+            &path,
+            "v 0 0 0\nv 4 0 0\nv 0 4 0\nv 0 0 4\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
+        )
+        .unwrap();
+        let mesh = Mesh::load_obj(&path, 2.0, [1.0; 3]).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        let (lo, hi) = mesh.bounds();
+        assert_eq!((lo.x, hi.x), (-1.0, 1.0));
+        assert!(enclosed_volume(&mesh) > 0.0);
+        assert!(mesh.normals.iter().all(|n| (n.norm() - 1.0).abs() < 1e-5));
+    }
+
+    #[test]
+    fn obj_errors_name_the_file() {
+        let missing = Path::new("/nonexistent/model.obj");
+        let err = Mesh::load_obj(missing, 1.0, [1.0; 3]).unwrap_err();
+        assert!(err.contains("/nonexistent/model.obj"), "{err}");
+    }
+}

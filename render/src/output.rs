@@ -1,0 +1,215 @@
+//! Image files: PNG frames (`png` crate) and the animated GIF (`gif` crate),
+//! each written to a temporary file beside its target and renamed into
+//! place only once complete, so a failure never leaves a half-written file.
+
+use std::fs::{self, File};
+use std::io::{self, BufReader, BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+use crate::image::Image;
+
+/// The temporary name used while `path` is being written: hidden, beside
+/// it (so that the rename stays on one file system), and unique to this
+/// process.
+fn temporary_path(path: &Path) -> PathBuf {
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    path.with_file_name(format!(".{name}.tmp-{}", std::process::id()))
+}
+
+/// Writes a file through `write`, atomically: into a temporary file that is
+/// renamed to `path` only after `write` succeeded and the data reached the
+/// disk. On any error the temporary file is removed and `path` is left as
+/// it was.
+///
+/// # Errors
+///
+/// The first I/O error, with the path in its message.
+pub fn write_atomically(
+    path: &Path,
+    write: impl FnOnce(&mut BufWriter<File>) -> io::Result<()>,
+) -> io::Result<()> {
+    let tmp = temporary_path(path);
+    let result = (|| {
+        let mut out = BufWriter::new(File::create(&tmp)?);
+        write(&mut out)?;
+        let file = out.into_inner().map_err(io::IntoInnerError::into_error)?;
+        file.sync_all()?;
+        fs::rename(&tmp, path)
+    })();
+    if result.is_err() {
+        // The temporary file may not exist; there is nothing more to do.
+        let _ = fs::remove_file(&tmp);
+    }
+    result.map_err(|e| io::Error::new(e.kind(), format!("cannot write {}: {e}", path.display())))
+}
+
+fn other(e: impl std::fmt::Display) -> io::Error {
+    io::Error::other(e.to_string())
+}
+
+/// Writes `image` as an 8-bit RGB PNG, atomically.
+///
+/// # Errors
+///
+/// I/O and encoding errors, with the path in the message.
+///
+/// ```
+/// use rigtform_render::output::{read_png, write_png};
+/// use rigtform_render::Image;
+/// let path = std::env::temp_dir().join(format!("rigtform-doc-{}.png", std::process::id()));
+/// write_png(&path, &Image::new(2, 2, [1, 2, 3])).unwrap();
+/// assert_eq!(read_png(&path).unwrap().pixel(1, 1), [1, 2, 3]);
+/// std::fs::remove_file(&path).unwrap();
+/// ```
+pub fn write_png(path: &Path, image: &Image) -> io::Result<()> {
+    write_atomically(path, |out| {
+        let mut encoder = png::Encoder::new(out, image.width(), image.height());
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        let mut writer = encoder.write_header().map_err(other)?;
+        writer
+            .write_image_data(&image.to_rgb_bytes())
+            .map_err(other)?;
+        writer.finish().map_err(other)
+    })
+}
+
+/// Reads an 8-bit RGB or RGBA PNG (alpha is dropped).
+///
+/// # Errors
+///
+/// I/O and decoding errors, and other colour types or depths.
+pub fn read_png(path: &Path) -> io::Result<Image> {
+    let file = File::open(path)
+        .map_err(|e| io::Error::new(e.kind(), format!("{}: {e}", path.display())))?;
+    let mut reader = png::Decoder::new(BufReader::new(file))
+        .read_info()
+        .map_err(other)?;
+    let size = reader
+        .output_buffer_size()
+        .ok_or_else(|| other("PNG too large"))?;
+    let mut buf = vec![0; size];
+    let info = reader.next_frame(&mut buf).map_err(other)?;
+    let bytes = &buf[..info.buffer_size()];
+    let channels = match (info.color_type, info.bit_depth) {
+        (png::ColorType::Rgb, png::BitDepth::Eight) => 3,
+        (png::ColorType::Rgba, png::BitDepth::Eight) => 4,
+        (c, d) => {
+            return Err(other(format!(
+                "{}: unsupported PNG format {c:?} {d:?}",
+                path.display()
+            )))
+        }
+    };
+    let rgb: Vec<u8> = bytes
+        .chunks_exact(channels)
+        .flat_map(|p| [p[0], p[1], p[2]])
+        .collect();
+    Image::from_rgb_bytes(info.width, info.height, &rgb).ok_or_else(|| other("PNG size mismatch"))
+}
+
+/// Writes `frames` as a looping animated GIF, atomically: each image shown
+/// for its delay, in hundredths of a second. Each frame gets its own
+/// 256-colour palette (NeuQuant, from the `gif` crate).
+///
+/// # Errors
+///
+/// No frame, frames of different sizes or larger than 65535 pixels, and
+/// I/O or encoding errors.
+pub fn write_gif(path: &Path, frames: &[(&Image, u16)]) -> io::Result<()> {
+    let (first, _) = frames
+        .first()
+        .ok_or_else(|| other("no frame for the GIF"))?;
+    let (w, h) = (first.width(), first.height());
+    if frames
+        .iter()
+        .any(|(f, _)| f.width() != w || f.height() != h)
+    {
+        return Err(other("GIF frames differ in size"));
+    }
+    let (w16, h16) = (
+        u16::try_from(w).map_err(|_| other("image too wide for a GIF"))?,
+        u16::try_from(h).map_err(|_| other("image too tall for a GIF"))?,
+    );
+    write_atomically(path, |out| {
+        let mut encoder = gif::Encoder::new(out, w16, h16, &[]).map_err(other)?;
+        encoder.set_repeat(gif::Repeat::Infinite).map_err(other)?;
+        for &(image, delay) in frames {
+            let mut frame = gif::Frame::from_rgb_speed(w16, h16, &image.to_rgb_bytes(), 10);
+            frame.delay = delay;
+            encoder.write_frame(&frame).map_err(other)?;
+        }
+        encoder.into_inner().map_err(other)?.flush()
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir =
+            std::env::temp_dir().join(format!("rigtform-output-{}-{name}", std::process::id()));
+        fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn png_round_trips() {
+        let dir = scratch("png");
+        let mut image = Image::new(5, 3, [10, 200, 30]);
+        image.set_pixel(4, 2, [1, 2, 3]);
+        let path = dir.join("a.png");
+        write_png(&path, &image).unwrap();
+        assert_eq!(read_png(&path).unwrap(), image);
+        fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn failed_write_leaves_no_file_behind() {
+        let dir = scratch("fail");
+        let path = dir.join("b.png");
+        fs::write(&path, b"old").unwrap();
+        let err = write_atomically(&path, |out| {
+            out.write_all(b"half")?;
+            Err(io::Error::other("disk full"))
+        })
+        .unwrap_err();
+        assert!(err.to_string().contains("b.png"), "{err}");
+        assert_eq!(fs::read(&path).unwrap(), b"old");
+        let left: Vec<_> = fs::read_dir(&dir).unwrap().collect();
+        assert_eq!(left.len(), 1, "only the original file remains");
+        fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn write_into_missing_folder_fails_cleanly() {
+        let path = Path::new("/nonexistent-rigtform-dir/c.png");
+        let err = write_png(path, &Image::new(1, 1, [0; 3])).unwrap_err();
+        assert!(err.to_string().contains("c.png"));
+    }
+
+    #[test]
+    fn gif_has_every_frame() {
+        let dir = scratch("gif");
+        let path = dir.join("a.gif");
+        let images: Vec<_> = (0..3).map(|i| Image::new(8, 4, [i * 100, 50, 0])).collect();
+        let frames: Vec<_> = images.iter().zip([50, 4, 7]).collect();
+        write_gif(&path, &frames).unwrap();
+        let mut decoder = gif::DecodeOptions::new()
+            .read_info(File::open(&path).unwrap())
+            .unwrap();
+        let mut delays = Vec::new();
+        while let Some(frame) = decoder.read_next_frame().unwrap() {
+            delays.push(frame.delay);
+        }
+        assert_eq!(delays, [50, 4, 7]);
+        assert!(write_gif(&path, &[]).is_err());
+        let odd = Image::new(3, 3, [0; 3]);
+        assert!(write_gif(&path, &[(&images[0], 1), (&odd, 1)]).is_err());
+        fs::remove_dir_all(&dir).unwrap();
+    }
+}
