@@ -16,6 +16,11 @@ use crate::viewport::ScreenVertex;
 pub const SUBPIXEL_BITS: u32 = 8;
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 
+/// The largest screen coordinate, in pixels, that triangle setup accepts:
+/// 2^20, so that snapped coordinates stay below 2^28 and products of their
+/// differences in the edge functions below 2^58, far from `i64` overflow.
+pub const MAX_COORDINATE: f32 = 1_048_576.0;
+
 /// The sample pattern of each pixel.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Msaa {
@@ -124,12 +129,10 @@ impl Triangle {
     /// Sets up the screen triangle `v` for a `width x height` viewport.
     ///
     /// `None` when it is culled (back-facing with [`Cull::Back`]), has no
-    /// area after snapping, or lies outside the viewport.
-    ///
-    /// # Preconditions
-    ///
-    /// Coordinates within the guard band of [`clip`](crate::clip), which
-    /// keeps the edge functions far from overflow.
+    /// area after snapping, lies outside the viewport, or has a coordinate
+    /// that is not finite or beyond [`MAX_COORDINATE`] pixels (clipping
+    /// against the guard band of [`clip`](crate::clip) keeps them far
+    /// inside), where the edge functions could overflow.
     ///
     /// ```
     /// use rigtform_render::{Cull, Msaa, ScreenVertex, Triangle};
@@ -141,6 +144,10 @@ impl Triangle {
     /// ```
     #[must_use]
     pub fn setup(v: [ScreenVertex; 3], cull: Cull, width: u32, height: u32) -> Option<Self> {
+        let in_range = |c: f32| c.abs() <= MAX_COORDINATE;
+        if !v.iter().all(|s| in_range(s.x) && in_range(s.y)) {
+            return None;
+        }
         let p = v.map(|s| (snap(s.x), snap(s.y)));
         let mut order = [0, 1, 2];
         let area = Edge::new(p[1], p[2]).at(p[0].0, p[0].1);
@@ -475,6 +482,12 @@ mod tests {
         assert!(Triangle::setup(line, Cull::None, 10, 10).is_none());
         let off = [sv(-9.0, 1.0), sv(-9.0, 9.0), sv(-1.0, 1.0)];
         assert!(Triangle::setup(off, Cull::None, 10, 10).is_none());
+        for bad in [f32::NAN, f32::INFINITY, 2.0 * MAX_COORDINATE] {
+            let tri = [sv(1.0, 1.0), sv(1.0, 9.0), sv(bad, 1.0)];
+            assert!(Triangle::setup(tri, Cull::None, 10, 10).is_none(), "{bad}");
+        }
+        let edge = [sv(1.0, 1.0), sv(1.0, 9.0), sv(MAX_COORDINATE, 1.0)];
+        assert!(Triangle::setup(edge, Cull::None, 10, 10).is_some());
     }
 
     fn flat(z: f32, corners: [(f32, f32); 3], color: f32) -> [ScreenVertex; 3] {
