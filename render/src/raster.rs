@@ -8,6 +8,8 @@
 //! outside or exactly on an edge is never a matter of rounding, and a
 //! sample on an edge shared by two triangles goes to exactly one of them.
 
+use core::cmp::Ordering;
+
 use crate::framebuffer::Band;
 use crate::vertex::ATTRIBUTES;
 use crate::viewport::ScreenVertex;
@@ -149,14 +151,14 @@ impl Triangle {
             return None;
         }
         let p = v.map(|s| (snap(s.x), snap(s.y)));
-        let mut order = [0, 1, 2];
         let area = Edge::new(p[1], p[2]).at(p[0].0, p[0].1);
-        if area == 0 || (area < 0 && cull == Cull::Back) {
-            return None;
-        }
-        if area < 0 {
-            order = [0, 2, 1];
-        }
+        // Front faces keep their order; back faces, when drawn, are turned
+        // round so that the edge functions are positive inside.
+        let order = match (area.cmp(&0), cull) {
+            (Ordering::Greater, _) => [0, 1, 2],
+            (Ordering::Less, Cull::None) => [0, 2, 1],
+            _ => return None,
+        };
         let p = order.map(|i| p[i]);
         let v = order.map(|i| v[i]);
         let edges = [
