@@ -202,8 +202,10 @@ impl Triangle {
     /// Calls `f(x, y, mask, e)` for every pixel in rows `y_from ..= y_to`
     /// with at least one covered sample, left to right, top to bottom:
     /// `mask` has bit `s` set for each covered sample `s`, and `e[s]` holds
-    /// the three edge functions at sample `s` (barycentric weights times
-    /// twice the area).
+    /// the three edge functions at sample `s`: barycentric weights times
+    /// twice the area, less the fill rule's bias of one unit (1/65536 of a
+    /// square pixel) on edges that are not top-left, so that a covered
+    /// sample has no negative weight.
     ///
     /// ```
     /// use rigtform_render::{Cull, Msaa, ScreenVertex, Triangle};
@@ -232,7 +234,6 @@ impl Triangle {
                 step[s][k] = e.a * ox + e.b * oy - e.bias;
             }
         }
-        let bias = self.edges.map(|e| e.bias);
         let mut e = [[0i64; 3]; 4];
         for y in y_from.max(self.y_min)..=y_to.min(self.y_max) {
             let corner_y = i64::from(y) * ONE;
@@ -250,8 +251,7 @@ impl Triangle {
                     if (v[0] | v[1] | v[2]) >= 0 {
                         mask |= 1 << s;
                     }
-                    // Undo the fill-rule bias for the weights.
-                    e[s] = [v[0] + bias[0], v[1] + bias[1], v[2] + bias[2]];
+                    e[s] = v;
                 }
                 if mask != 0 {
                     f(x, y, mask, &e);
@@ -319,11 +319,11 @@ impl Triangle {
         }
     }
 
-    /// Perspective-correct attributes from barycentric weights: `a / w` and
-    /// `1 / w` interpolate linearly on screen, their ratio gives `a`.
+    /// Perspective-correct attributes from barycentric weights (of any
+    /// common scale): `a / w` and `1 / w` interpolate linearly on screen,
+    /// and their ratio gives `a`, in which the scale cancels.
     fn interpolate(&self, weights: [i64; 3]) -> [f32; ATTRIBUTES] {
-        let inv_area = 1.0 / self.area as f64;
-        let l = weights.map(|w| (w as f64 * inv_area) as f32);
+        let l = weights.map(|w| w as f32);
         let inv_w = l[0] * self.inv_w[0] + l[1] * self.inv_w[1] + l[2] * self.inv_w[2];
         let w = 1.0 / inv_w;
         let mut out = [0.0; ATTRIBUTES];
