@@ -139,8 +139,8 @@ mod tests {
     fn triangle_crossing_near_plane_is_kept_in_front_of_it() {
         // Two vertices in front, one behind: a quadrilateral.
         let tri = [
-            v(0.0, 0.0, 0.0, 1.0),
-            v(1.0, 0.0, 0.0, 1.0),
+            v(0.1, 0.2, 0.5, 1.0),
+            v(1.0, 0.3, 0.2, 1.2),
             v(0.0, 1.0, -3.0, 1.0),
         ];
         let out = clipped(tri);
@@ -155,7 +155,14 @@ mod tests {
             .count();
         assert!(on_plane >= 2);
         // Attributes are carried along with the position.
-        assert!(all.iter().all(|c| c.attrs[2] == c.clip.z));
+        for c in &all {
+            let a = c.attrs;
+            let same = (a[0] - c.clip.x).abs()
+                + (a[1] - c.clip.y).abs()
+                + (a[2] - c.clip.z).abs()
+                + (a[3] - c.clip.w).abs();
+            assert!(same < 1e-6, "{c:?}");
+        }
     }
 
     #[test]
