@@ -356,6 +356,17 @@ mod tests {
     }
 
     #[test]
+    fn sphere_has_no_degenerate_triangles_at_the_poles() {
+        let (slices, stacks) = (12, 7);
+        let s = Mesh::sphere(1.0, slices, stacks, [1.0; 3]);
+        assert_eq!(s.triangles.len() as u32, slices * (2 * stacks - 2));
+        for t in &s.triangles {
+            let [a, b, c] = t.map(|i| s.positions[i as usize]);
+            assert!((b - a).cross(c - a).norm() > 1e-4, "{t:?}");
+        }
+    }
+
+    #[test]
     fn ground_faces_up() {
         let g = Mesh::ground([-1.0, 1.0], [-1.0, 1.0], 2, [[0.0; 3], [1.0; 3]]);
         for t in &g.triangles {
