@@ -230,8 +230,10 @@ mod tests {
         assert_eq!(shown, [(0, 50), (100, 4), (200, 7), (100, 4)]);
         assert!(write_gif(&path, &images, &[]).is_err());
         assert!(write_gif(&path, &images, &[(3, 1)]).is_err());
-        let odd = [images[0].clone(), Image::new(3, 3, [0; 3])];
-        assert!(write_gif(&path, &odd, &[(0, 1)]).is_err());
+        for odd in [Image::new(8, 3, [0; 3]), Image::new(7, 4, [0; 3])] {
+            let pair = [images[0].clone(), odd];
+            assert!(write_gif(&path, &pair, &[(0, 1)]).is_err());
+        }
         fs::remove_dir_all(&dir).unwrap();
     }
 }
