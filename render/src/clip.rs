@@ -4,6 +4,8 @@
 //! the fixed-point edge functions cannot overflow. Triangles beyond the far
 //! plane are left to the depth test, which rejects `z > 1`.
 
+use rigtform::Cvec4;
+
 use crate::vertex::ClipVertex;
 
 /// How far outside the viewport, in viewport half-widths, screen
@@ -22,8 +24,7 @@ const PLANES: [[f32; 4]; 5] = [
 ];
 
 fn distance(plane: [f32; 4], v: &ClipVertex) -> f32 {
-    let c = v.clip;
-    plane[0] * c.x + plane[1] * c.y + plane[2] * c.z + plane[3] * c.w
+    Cvec4::from_array(plane).dot(v.clip)
 }
 
 /// Clips the triangle `tri` and appends the triangles of the remaining
@@ -49,19 +50,20 @@ pub fn clip_triangle(tri: [ClipVertex; 3], out: &mut Vec<[ClipVertex; 3]>) {
     if !tri.iter().all(|v| v.clip.is_finite()) {
         return;
     }
+    // Outcodes: bit k set when a vertex is outside plane k.
+    let outcode = |v: &ClipVertex| {
+        PLANES.iter().enumerate().fold(0u8, |code, (k, &p)| {
+            code | (u8::from(distance(p, v) < 0.0) << k)
+        })
+    };
+    let codes = tri.each_ref().map(outcode);
     // The usual case: nothing to cut.
-    if PLANES
-        .iter()
-        .all(|&p| tri.iter().all(|v| distance(p, v) >= 0.0))
-    {
+    if codes == [0; 3] {
         out.push(tri);
         return;
     }
     // Trivial rejection: all three outside one plane.
-    if PLANES
-        .iter()
-        .any(|&p| tri.iter().all(|v| distance(p, v) < 0.0))
-    {
+    if codes[0] & codes[1] & codes[2] != 0 {
         return;
     }
     let mut polygon: Vec<ClipVertex> = tri.to_vec();
@@ -95,7 +97,6 @@ pub fn clip_triangle(tri: [ClipVertex; 3], out: &mut Vec<[ClipVertex; 3]>) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rigtform::Cvec4;
 
     fn v(x: f32, y: f32, z: f32, w: f32) -> ClipVertex {
         ClipVertex {
@@ -138,8 +139,8 @@ mod tests {
     fn triangle_crossing_near_plane_is_kept_in_front_of_it() {
         // Two vertices in front, one behind: a quadrilateral.
         let tri = [
-            v(0.0, 0.0, 0.0, 1.0),
-            v(1.0, 0.0, 0.0, 1.0),
+            v(0.1, 0.2, 0.5, 1.0),
+            v(1.0, 0.3, 0.2, 1.2),
             v(0.0, 1.0, -3.0, 1.0),
         ];
         let out = clipped(tri);
@@ -154,7 +155,14 @@ mod tests {
             .count();
         assert!(on_plane >= 2);
         // Attributes are carried along with the position.
-        assert!(all.iter().all(|c| c.attrs[2] == c.clip.z));
+        for c in &all {
+            let a = c.attrs;
+            let same = (a[0] - c.clip.x).abs()
+                + (a[1] - c.clip.y).abs()
+                + (a[2] - c.clip.z).abs()
+                + (a[3] - c.clip.w).abs();
+            assert!(same < 1e-6, "{c:?}");
+        }
     }
 
     #[test]

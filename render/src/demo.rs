@@ -220,43 +220,40 @@ impl Demo {
     /// ```
     #[must_use]
     pub fn caption(&self, panel: &Panel, alpha: f32) -> String {
-        let slerp = self.object_frame(
-            &Panel {
-                method: Method::Slerp,
+        let rotation = |p: &Panel| match self.object_frame(p, alpha) {
+            Frame::Rigid(r) => Some(r.r),
+            Frame::Matrix(_) => None,
+        };
+        let degrees_between = |a: &Panel, b: &Panel| {
+            rotation(a)
+                .zip(rotation(b))
+                .map_or(0.0, |(a, b)| a.angle_to(b).to_degrees())
+        };
+        if panel.world != RigTForm::IDENTITY {
+            // The same method in the untouched world frame.
+            let in_world = Panel {
                 world: RigTForm::IDENTITY,
                 ..*panel
-            },
-            alpha,
-        );
-        let in_world = self.object_frame(
-            &Panel {
-                world: RigTForm::IDENTITY,
-                ..*panel
-            },
-            alpha,
-        );
+            };
+            return format!("{:5.1} deg off world's", degrees_between(panel, &in_world));
+        }
         match (panel.method, self.object_frame(panel, alpha)) {
             (Method::MatrixLerp, Frame::Matrix(m)) => {
                 let [a, b, c, _] = m.cols.map(Cvec4::xyz);
                 format!("volume x{:.2}", a.dot(b.cross(c)))
             }
-            (_, Frame::Rigid(f)) if panel.world != RigTForm::IDENTITY => {
-                let Frame::Rigid(w) = in_world else {
-                    return String::new();
+            (Method::EulerLerp, _) => {
+                let slerp = Panel {
+                    method: Method::Slerp,
+                    ..*panel
                 };
-                format!("{:5.1} deg off world's", f.r.angle_to(w.r).to_degrees())
-            }
-            (Method::EulerLerp, Frame::Rigid(f)) => {
-                let Frame::Rigid(s) = slerp else {
-                    return String::new();
-                };
-                format!("{:5.1} deg off slerp", f.r.angle_to(s.r).to_degrees())
+                format!("{:5.1} deg off slerp", degrees_between(panel, &slerp))
             }
             (_, Frame::Rigid(f)) => {
                 let k0 = self.keyframes.0;
                 format!("turned {:5.1} deg", f.r.angle_to(k0.r).to_degrees())
             }
-            _ => String::new(),
+            (_, Frame::Matrix(_)) => String::new(),
         }
     }
 
@@ -393,16 +390,30 @@ mod tests {
         assert_eq!(Demo::alpha(2, 5), 0.5);
         assert_eq!(Demo::alpha(4, 5), 1.0);
         assert_eq!(Demo::alpha(0, 1), 0.0);
+        assert_eq!(Demo::alpha(1, 2), 1.0);
     }
 
     #[test]
     fn contact_sheet_stacks_rows_under_each_other() {
-        let a = Image::new(10, 6, [255, 0, 0]);
-        let b = Image::new(10, 6, [0, 0, 255]);
+        let a = Image::new(10, 40, [255, 0, 0]);
+        let b = Image::new(10, 40, [0, 0, 255]);
         let sheet = contact_sheet(&[(0.0, &a), (1.0, &b)]);
-        assert_eq!(sheet.height(), 2 * (6 + 4));
-        let margin = sheet.width() - 10;
+        let margin = 8 * 11 + 8;
+        assert_eq!((sheet.width(), sheet.height()), (10 + margin, 2 * (40 + 4)));
         assert_eq!(sheet.pixel(margin, 0), [255, 0, 0]);
-        assert_eq!(sheet.pixel(margin, 10), [0, 0, 255]);
+        assert_eq!(sheet.pixel(margin, 44), [0, 0, 255]);
+        assert_eq!(sheet.pixel(margin, 41), BAR, "the gap");
+        // Each row's label sits in the margin beside the middle of its row:
+        // "alpha" from 10 above the middle, the value (twice as large)
+        // down to 18 below it.
+        for y in 0..sheet.height() {
+            let lit = (0..margin).any(|x| sheet.pixel(x, y) != BAR);
+            let row_mid = 20 + 44 * (y / 44);
+            let beside = y + 10 >= row_mid && y < row_mid + 18;
+            assert!(!lit || beside, "label pixel at row {y}");
+            if y + 9 == row_mid || y == row_mid + 8 {
+                assert!(lit, "label missing at row {y}");
+            }
+        }
     }
 }

@@ -233,18 +233,25 @@ mod tests {
 
     #[test]
     fn depth_test_keeps_the_nearest() {
-        let mut fb = Framebuffer::new(2, 2, Msaa::Off, [0.0; 3]);
+        let mut fb = Framebuffer::new(3, 4, Msaa::X4, [0.0; 3]);
         let mut bands = fb.bands_mut(2);
-        let band = &mut bands[0];
-        assert!(band.depth_test(1, 1, 0, 0.5));
-        assert!(!band.depth_test(1, 1, 0, 0.7));
-        assert!(!band.depth_test(1, 1, 0, 0.5));
-        assert!(band.depth_test(1, 1, 0, -0.2));
-        assert!(!band.depth_test(1, 1, 0, f32::NAN));
-        assert!(!band.depth_test(0, 0, 0, 1.5), "beyond the far plane");
+        let band = &mut bands[1]; // rows 2 and 3
+        assert!(band.depth_test(1, 3, 2, 0.5));
+        assert!(!band.depth_test(1, 3, 2, 0.7));
+        assert!(!band.depth_test(1, 3, 2, 0.5));
+        assert!(band.depth_test(1, 3, 2, -0.2));
+        assert!(!band.depth_test(1, 3, 2, f32::NAN));
+        assert!(!band.depth_test(0, 2, 0, 1.5), "beyond the far plane");
         drop(bands);
-        assert_eq!(fb.depth(1, 1, 0), -0.2);
-        assert_eq!(fb.depth(0, 1, 0), 1.0);
+        // Only that sample of that pixel changed.
+        for y in 0..4 {
+            for x in 0..3 {
+                for s in 0..4 {
+                    let expected = if (x, y, s) == (1, 3, 2) { -0.2 } else { 1.0 };
+                    assert_eq!(fb.depth(x, y, s), expected, "({x}, {y}) sample {s}");
+                }
+            }
+        }
     }
 
     #[test]

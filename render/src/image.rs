@@ -185,6 +185,43 @@ mod tests {
     }
 
     #[test]
+    fn fill_rect_covers_exactly_its_rectangle() {
+        let mut a = Image::new(6, 5, [0; 3]);
+        a.fill_rect(1, 2, 3, 2, [7; 3]);
+        for y in 0..5 {
+            for x in 0..6 {
+                let inside = (1..4).contains(&x) && (2..4).contains(&y);
+                assert_eq!(a.pixel(x, y) == [7; 3], inside, "({x}, {y})");
+            }
+        }
+    }
+
+    #[test]
+    fn scaled_text_is_scaled_glyphs_side_by_side() {
+        let glyphs = |text: &str, scale: u32| {
+            let mut im = Image::new(Image::text_width(text, scale), GLYPH_SIZE * scale, [0; 3]);
+            im.draw_text(0, 0, text, scale, [255; 3]);
+            im
+        };
+        assert_eq!(Image::text_width("abc", 3), 72);
+        let (one, three) = (glyphs("T7", 1), glyphs("T7", 3));
+        for y in 0..3 * GLYPH_SIZE {
+            for x in 0..Image::text_width("T7", 3) {
+                assert_eq!(three.pixel(x, y), one.pixel(x / 3, y / 3), "({x}, {y})");
+            }
+        }
+        // Drawn at an offset, the same pixels move with it.
+        let mut shifted = Image::new(40, 30, [0; 3]);
+        shifted.draw_text(5, 4, "T7", 2, [255; 3]);
+        let two = glyphs("T7", 2);
+        for y in 0..2 * GLYPH_SIZE {
+            for x in 0..Image::text_width("T7", 2) {
+                assert_eq!(shifted.pixel(x + 5, y + 4), two.pixel(x, y));
+            }
+        }
+    }
+
+    #[test]
     fn rgb_bytes_round_trip() {
         let mut a = Image::new(2, 1, [1, 2, 3]);
         a.set_pixel(1, 0, [4, 5, 6]);

@@ -62,7 +62,7 @@ pub use euler::Euler;
 pub use framebuffer::{linear_to_srgb8, Band, Framebuffer};
 pub use image::Image;
 pub use mesh::Mesh;
-pub use raster::{Cull, Msaa, Triangle};
+pub use raster::{Cull, Msaa, Triangle, MAX_COORDINATE};
 pub use scene::{Camera, Draw, Scene, Settings, Stats};
 pub use shade::Lighting;
 pub use vertex::{transform_vertices, ClipVertex, Frame, Transforms, ATTRIBUTES};

@@ -177,12 +177,13 @@ fn run(args: &Args) -> Result<String, String> {
         // each keyframe.
         let delay = (300 / args.frames).clamp(2, 20) as u16;
         let last = images.len() - 1;
-        let there_and_back: Vec<(&Image, u16)> = (0..=last)
+        let there_and_back: Vec<(usize, u16)> = (0..=last)
             .chain((1..last).rev())
-            .map(|i| (&images[i], if i == 0 || i == last { 80 } else { delay }))
+            .map(|i| (i, if i == 0 || i == last { 80 } else { delay }))
             .collect();
         let gif_path = args.out.join("animation.gif");
-        write_gif(&gif_path, &there_and_back).map_err(|e| e.to_string())?;
+        pool.install(|| write_gif(&gif_path, &images, &there_and_back))
+            .map_err(|e| e.to_string())?;
         written += &format!(", {}", gif_path.display());
     }
     Ok(format!(

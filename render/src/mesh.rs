@@ -356,6 +356,17 @@ mod tests {
     }
 
     #[test]
+    fn sphere_has_no_degenerate_triangles_at_the_poles() {
+        let (slices, stacks) = (12, 7);
+        let s = Mesh::sphere(1.0, slices, stacks, [1.0; 3]);
+        assert_eq!(s.triangles.len() as u32, slices * (2 * stacks - 2));
+        for t in &s.triangles {
+            let [a, b, c] = t.map(|i| s.positions[i as usize]);
+            assert!((b - a).cross(c - a).norm() > 1e-4, "{t:?}");
+        }
+    }
+
+    #[test]
     fn ground_faces_up() {
         let g = Mesh::ground([-1.0, 1.0], [-1.0, 1.0], 2, [[0.0; 3], [1.0; 3]]);
         for t in &g.triangles {
@@ -373,22 +384,49 @@ mod tests {
         assert!(lo.x < 0.0 && lo.x > -0.5);
     }
 
+    /// Loads OBJ text through a temporary file.
+    fn load_obj_text(name: &str, text: &str, size: f32) -> Result<Mesh, String> {
+        let dir = std::env::temp_dir().join(format!("rigtform-obj-{}-{name}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join(format!("{name}.obj"));
+        std::fs::write(&path, text).unwrap();
+        let mesh = Mesh::load_obj(&path, size, [1.0; 3]);
+        std::fs::remove_dir_all(&dir).unwrap();
+        mesh
+    }
+
     #[test]
     fn obj_loads_centred_and_scaled_with_computed_normals() {
-        let dir = std::env::temp_dir().join(format!("rigtform-obj-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("tetra.obj");
-        std::fs::write(
-            &path,
-            "v 0 0 0\nv 4 0 0\nv 0 4 0\nv 0 0 4\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n",
-        )
-        .unwrap();
-        let mesh = Mesh::load_obj(&path, 2.0, [1.0; 3]).unwrap();
-        std::fs::remove_dir_all(&dir).unwrap();
+        // A tetrahedron spanning x in [10, 14], y in [-3, 1], z in [2, 6].
+        let text =
+            "v 10 -3 2\nv 14 -3 2\nv 10 1 2\nv 10 -3 6\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+        let mesh = load_obj_text("tetra", text, 2.0).unwrap();
         let (lo, hi) = mesh.bounds();
-        assert_eq!((lo.x, hi.x), (-1.0, 1.0));
+        assert_eq!(
+            (lo, hi),
+            (Cvec3::new(-1.0, -1.0, -1.0), Cvec3::new(1.0, 1.0, 1.0))
+        );
         assert!(enclosed_volume(&mesh) > 0.0);
         assert!(mesh.normals.iter().all(|n| (n.norm() - 1.0).abs() < 1e-5));
+        // The corner's normal averages its three faces' outward normals.
+        let corner = mesh.normals[0];
+        assert!(
+            (corner - Cvec3::new(-1.0, -1.0, -1.0).normalize()).norm() < 1e-5,
+            "{corner:?}"
+        );
+    }
+
+    #[test]
+    fn obj_normals_from_the_file_are_kept() {
+        let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nf 1//1 2//1 3//1\n";
+        let mesh = load_obj_text("normals", text, 1.0).unwrap();
+        assert_eq!(mesh.normals, vec![Cvec3::Z; 3]);
+    }
+
+    #[test]
+    fn obj_collapsed_to_a_point_stays_finite() {
+        let mesh = load_obj_text("point", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n", 1.0).unwrap();
+        assert_eq!(mesh.positions, vec![Cvec3::ZERO; 3]);
     }
 
     #[test]

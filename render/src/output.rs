@@ -6,6 +6,8 @@ use std::fs::{self, File};
 use std::io::{self, BufReader, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
+use rayon::prelude::*;
+
 use crate::image::Image;
 
 /// The temporary name used while `path` is being written: hidden, beside
@@ -111,34 +113,50 @@ pub fn read_png(path: &Path) -> io::Result<Image> {
     Image::from_rgb_bytes(info.width, info.height, &rgb).ok_or_else(|| other("PNG size mismatch"))
 }
 
-/// Writes `frames` as a looping animated GIF, atomically: each image shown
-/// for its delay, in hundredths of a second. Each frame gets its own
-/// 256-colour palette (NeuQuant, from the `gif` crate).
+/// Writes a looping animated GIF, atomically: `sequence` lists which of
+/// `images` to show, in order, each for its delay in hundredths of a
+/// second (an image may be shown more than once). Each image gets its own
+/// 256-colour palette (NeuQuant, from the `gif` crate), computed once per
+/// image, in parallel.
 ///
 /// # Errors
 ///
-/// No frame, frames of different sizes or larger than 65535 pixels, and
-/// I/O or encoding errors.
-pub fn write_gif(path: &Path, frames: &[(&Image, u16)]) -> io::Result<()> {
-    let (first, _) = frames
-        .first()
-        .ok_or_else(|| other("no frame for the GIF"))?;
-    let (w, h) = (first.width(), first.height());
-    if frames
-        .iter()
-        .any(|(f, _)| f.width() != w || f.height() != h)
-    {
+/// An empty sequence, an index out of range, images of different sizes or
+/// larger than 65535 pixels, and I/O or encoding errors.
+///
+/// ```
+/// use rigtform_render::output::write_gif;
+/// use rigtform_render::Image;
+/// let images = [Image::new(4, 4, [255, 0, 0]), Image::new(4, 4, [0, 0, 255])];
+/// let path = std::env::temp_dir().join(format!("rigtform-doc-{}.gif", std::process::id()));
+/// write_gif(&path, &images, &[(0, 50), (1, 10), (0, 10)]).unwrap();
+/// assert!(std::fs::metadata(&path).unwrap().len() > 0);
+/// std::fs::remove_file(&path).unwrap();
+/// ```
+pub fn write_gif(path: &Path, images: &[Image], sequence: &[(usize, u16)]) -> io::Result<()> {
+    if sequence.is_empty() {
+        return Err(other("no frame for the GIF"));
+    }
+    if sequence.iter().any(|&(i, _)| i >= images.len()) {
+        return Err(other("GIF frame index out of range"));
+    }
+    let (w, h) = (images[0].width(), images[0].height());
+    if images.iter().any(|f| f.width() != w || f.height() != h) {
         return Err(other("GIF frames differ in size"));
     }
     let (w16, h16) = (
         u16::try_from(w).map_err(|_| other("image too wide for a GIF"))?,
         u16::try_from(h).map_err(|_| other("image too tall for a GIF"))?,
     );
+    let frames: Vec<gif::Frame<'static>> = images
+        .par_iter()
+        .map(|image| gif::Frame::from_rgb_speed(w16, h16, &image.to_rgb_bytes(), 10))
+        .collect();
     write_atomically(path, |out| {
         let mut encoder = gif::Encoder::new(out, w16, h16, &[]).map_err(other)?;
         encoder.set_repeat(gif::Repeat::Infinite).map_err(other)?;
-        for &(image, delay) in frames {
-            let mut frame = gif::Frame::from_rgb_speed(w16, h16, &image.to_rgb_bytes(), 10);
+        for &(i, delay) in sequence {
+            let mut frame = frames[i].clone();
             frame.delay = delay;
             encoder.write_frame(&frame).map_err(other)?;
         }
@@ -197,19 +215,25 @@ mod tests {
         let dir = scratch("gif");
         let path = dir.join("a.gif");
         let images: Vec<_> = (0..3).map(|i| Image::new(8, 4, [i * 100, 50, 0])).collect();
-        let frames: Vec<_> = images.iter().zip([50, 4, 7]).collect();
-        write_gif(&path, &frames).unwrap();
+        write_gif(&path, &images, &[(0, 50), (1, 4), (2, 7), (1, 4)]).unwrap();
         let mut decoder = gif::DecodeOptions::new()
             .read_info(File::open(&path).unwrap())
             .unwrap();
-        let mut delays = Vec::new();
+        let mut shown = Vec::new();
         while let Some(frame) = decoder.read_next_frame().unwrap() {
-            delays.push(frame.delay);
+            let red = frame
+                .palette
+                .as_ref()
+                .map_or(0, |p| p[3 * frame.buffer[0] as usize]);
+            shown.push((red, frame.delay));
         }
-        assert_eq!(delays, [50, 4, 7]);
-        assert!(write_gif(&path, &[]).is_err());
-        let odd = Image::new(3, 3, [0; 3]);
-        assert!(write_gif(&path, &[(&images[0], 1), (&odd, 1)]).is_err());
+        assert_eq!(shown, [(0, 50), (100, 4), (200, 7), (100, 4)]);
+        assert!(write_gif(&path, &images, &[]).is_err());
+        assert!(write_gif(&path, &images, &[(3, 1)]).is_err());
+        for odd in [Image::new(8, 3, [0; 3]), Image::new(7, 4, [0; 3])] {
+            let pair = [images[0].clone(), odd];
+            assert!(write_gif(&path, &pair, &[(0, 1)]).is_err());
+        }
         fs::remove_dir_all(&dir).unwrap();
     }
 }

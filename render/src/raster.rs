@@ -8,6 +8,8 @@
 //! outside or exactly on an edge is never a matter of rounding, and a
 //! sample on an edge shared by two triangles goes to exactly one of them.
 
+use core::cmp::Ordering;
+
 use crate::framebuffer::Band;
 use crate::vertex::ATTRIBUTES;
 use crate::viewport::ScreenVertex;
@@ -15,6 +17,11 @@ use crate::viewport::ScreenVertex;
 /// Fixed-point fraction bits of screen positions: 1/256 of a pixel.
 pub const SUBPIXEL_BITS: u32 = 8;
 const ONE: i64 = 1 << SUBPIXEL_BITS;
+
+/// The largest screen coordinate, in pixels, that triangle setup accepts:
+/// 2^20, so that snapped coordinates stay below 2^28 and products of their
+/// differences in the edge functions below 2^58, far from `i64` overflow.
+pub const MAX_COORDINATE: f32 = 1_048_576.0;
 
 /// The sample pattern of each pixel.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -124,12 +131,10 @@ impl Triangle {
     /// Sets up the screen triangle `v` for a `width x height` viewport.
     ///
     /// `None` when it is culled (back-facing with [`Cull::Back`]), has no
-    /// area after snapping, or lies outside the viewport.
-    ///
-    /// # Preconditions
-    ///
-    /// Coordinates within the guard band of [`clip`](crate::clip), which
-    /// keeps the edge functions far from overflow.
+    /// area after snapping, lies outside the viewport, or has a coordinate
+    /// that is not finite or beyond [`MAX_COORDINATE`] pixels (clipping
+    /// against the guard band of [`clip`](crate::clip) keeps them far
+    /// inside), where the edge functions could overflow.
     ///
     /// ```
     /// use rigtform_render::{Cull, Msaa, ScreenVertex, Triangle};
@@ -141,15 +146,19 @@ impl Triangle {
     /// ```
     #[must_use]
     pub fn setup(v: [ScreenVertex; 3], cull: Cull, width: u32, height: u32) -> Option<Self> {
-        let p = v.map(|s| (snap(s.x), snap(s.y)));
-        let mut order = [0, 1, 2];
-        let area = Edge::new(p[1], p[2]).at(p[0].0, p[0].1);
-        if area == 0 || (area < 0 && cull == Cull::Back) {
+        let in_range = |c: f32| c.abs() <= MAX_COORDINATE;
+        if !v.iter().all(|s| in_range(s.x) && in_range(s.y)) {
             return None;
         }
-        if area < 0 {
-            order = [0, 2, 1];
-        }
+        let p = v.map(|s| (snap(s.x), snap(s.y)));
+        let area = Edge::new(p[1], p[2]).at(p[0].0, p[0].1);
+        // Front faces keep their order; back faces, when drawn, are turned
+        // round so that the edge functions are positive inside.
+        let order = match (area.cmp(&0), cull) {
+            (Ordering::Greater, _) => [0, 1, 2],
+            (Ordering::Less, Cull::None) => [0, 2, 1],
+            _ => return None,
+        };
         let p = order.map(|i| p[i]);
         let v = order.map(|i| v[i]);
         let edges = [
@@ -193,8 +202,10 @@ impl Triangle {
     /// Calls `f(x, y, mask, e)` for every pixel in rows `y_from ..= y_to`
     /// with at least one covered sample, left to right, top to bottom:
     /// `mask` has bit `s` set for each covered sample `s`, and `e[s]` holds
-    /// the three edge functions at sample `s` (barycentric weights times
-    /// twice the area).
+    /// the three edge functions at sample `s`: barycentric weights times
+    /// twice the area, less the fill rule's bias of one unit (1/65536 of a
+    /// square pixel) on edges that are not top-left, so that a covered
+    /// sample has no negative weight.
     ///
     /// ```
     /// use rigtform_render::{Cull, Msaa, ScreenVertex, Triangle};
@@ -223,7 +234,6 @@ impl Triangle {
                 step[s][k] = e.a * ox + e.b * oy - e.bias;
             }
         }
-        let bias = self.edges.map(|e| e.bias);
         let mut e = [[0i64; 3]; 4];
         for y in y_from.max(self.y_min)..=y_to.min(self.y_max) {
             let corner_y = i64::from(y) * ONE;
@@ -241,8 +251,7 @@ impl Triangle {
                     if (v[0] | v[1] | v[2]) >= 0 {
                         mask |= 1 << s;
                     }
-                    // Undo the fill-rule bias for the weights.
-                    e[s] = [v[0] + bias[0], v[1] + bias[1], v[2] + bias[2]];
+                    e[s] = v;
                 }
                 if mask != 0 {
                     f(x, y, mask, &e);
@@ -310,11 +319,11 @@ impl Triangle {
         }
     }
 
-    /// Perspective-correct attributes from barycentric weights: `a / w` and
-    /// `1 / w` interpolate linearly on screen, their ratio gives `a`.
+    /// Perspective-correct attributes from barycentric weights (of any
+    /// common scale): `a / w` and `1 / w` interpolate linearly on screen,
+    /// and their ratio gives `a`, in which the scale cancels.
     fn interpolate(&self, weights: [i64; 3]) -> [f32; ATTRIBUTES] {
-        let inv_area = 1.0 / self.area as f64;
-        let l = weights.map(|w| (w as f64 * inv_area) as f32);
+        let l = weights.map(|w| w as f32);
         let inv_w = l[0] * self.inv_w[0] + l[1] * self.inv_w[1] + l[2] * self.inv_w[2];
         let w = 1.0 / inv_w;
         let mut out = [0.0; ATTRIBUTES];
@@ -475,6 +484,12 @@ mod tests {
         assert!(Triangle::setup(line, Cull::None, 10, 10).is_none());
         let off = [sv(-9.0, 1.0), sv(-9.0, 9.0), sv(-1.0, 1.0)];
         assert!(Triangle::setup(off, Cull::None, 10, 10).is_none());
+        for bad in [f32::NAN, f32::INFINITY, 2.0 * MAX_COORDINATE] {
+            let tri = [sv(1.0, 1.0), sv(1.0, 9.0), sv(bad, 1.0)];
+            assert!(Triangle::setup(tri, Cull::None, 10, 10).is_none(), "{bad}");
+        }
+        let edge = [sv(1.0, 1.0), sv(1.0, 9.0), sv(MAX_COORDINATE, 1.0)];
+        assert!(Triangle::setup(edge, Cull::None, 10, 10).is_some());
     }
 
     fn flat(z: f32, corners: [(f32, f32); 3], color: f32) -> [ScreenVertex; 3] {
