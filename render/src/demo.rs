@@ -301,6 +301,56 @@ fn apply(frame: Frame, p: Cvec3) -> Cvec3 {
     }
 }
 
+/// Which of `frames` frames the contact sheet shows in its `rows` rows:
+/// evenly spaced, the first and the last included.
+///
+/// ```
+/// use rigtform_render::demo::sheet_frames;
+/// assert_eq!(sheet_frames(49, 5), [0, 12, 24, 36, 48]);
+/// ```
+#[must_use]
+pub fn sheet_frames(frames: u32, rows: u32) -> Vec<u32> {
+    if rows < 2 || frames < 2 {
+        return vec![0];
+    }
+    (0..rows)
+        .map(|r| ((frames - 1) * r + (rows - 1) / 2) / (rows - 1))
+        .collect()
+}
+
+/// The animation's frame sequence: forward through `frames` frames, then
+/// back, a loop without a jump; each entry is a frame index and its delay
+/// in hundredths of a second, resting 0.8 s on each keyframe and spreading
+/// the rest over about three seconds each way.
+///
+/// ```
+/// use rigtform_render::demo::gif_sequence;
+/// assert_eq!(gif_sequence(3), [(0, 80), (1, 20), (2, 80), (1, 20)]);
+/// ```
+#[must_use]
+pub fn gif_sequence(frames: u32) -> Vec<(usize, u16)> {
+    let delay = (300 / frames.max(1)).clamp(2, 20) as u16;
+    let last = frames.saturating_sub(1) as usize;
+    (0..=last)
+        .chain((1..last).rev())
+        .map(|i| (i, if i == 0 || i == last { 80 } else { delay }))
+        .collect()
+}
+
+/// The size of the longest side of an OBJ body in the demo: as long as the
+/// axes body is wide.
+pub const BODY_SIZE: f32 = 2.0 * ARM;
+
+/// Loads an OBJ file as the demo's body: centred, its longest side
+/// [`BODY_SIZE`], coloured a warm orange.
+///
+/// # Errors
+///
+/// As [`Mesh::load_obj`].
+pub fn load_body(path: &std::path::Path) -> Result<Mesh, String> {
+    Mesh::load_obj(path, BODY_SIZE, [0.8, 0.62, 0.35])
+}
+
 /// Stacks frames into one picture, each row labelled with its `alpha` in
 /// a margin on the left.
 #[must_use]
@@ -382,6 +432,41 @@ mod tests {
         assert_eq!(slerp_g, "  0.0 deg off world's");
         let euler_off: f32 = euler_g.split_whitespace().next().unwrap().parse().unwrap();
         assert!(euler_off > 10.0, "{euler_g}");
+    }
+
+    #[test]
+    fn sheet_shows_evenly_spaced_frames_first_and_last_included() {
+        assert_eq!(sheet_frames(5, 3), [0, 2, 4]);
+        assert_eq!(sheet_frames(2, 2), [0, 1]);
+        assert_eq!(sheet_frames(10, 4), [0, 3, 6, 9]);
+        assert_eq!(sheet_frames(11, 3), [0, 5, 10]);
+        assert_eq!(sheet_frames(7, 7), [0, 1, 2, 3, 4, 5, 6]);
+    }
+
+    #[test]
+    fn gif_goes_there_and_back_resting_on_the_keyframes() {
+        assert_eq!(gif_sequence(2), [(0, 80), (1, 80)]);
+        let seq = gif_sequence(49);
+        let order: Vec<usize> = seq.iter().map(|&(i, _)| i).collect();
+        let expected: Vec<usize> = (0..49).chain((1..48).rev()).collect();
+        assert_eq!(order, expected);
+        assert!(seq
+            .iter()
+            .all(|&(i, d)| d == if i == 0 || i == 48 { 80 } else { 6 }));
+        assert_eq!(gif_sequence(1000)[1].1, 2, "at least 2/100 s a frame");
+    }
+
+    #[test]
+    fn obj_body_is_as_long_as_the_axes_body() {
+        let dir = std::env::temp_dir().join(format!("rigtform-body-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("tri.obj");
+        std::fs::write(&path, "v 0 0 0\nv 5 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+        let body = load_body(&path).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        let (lo, hi) = body.bounds();
+        assert!((hi.x - lo.x - 2.0 * ARM).abs() < 1e-6);
+        assert!((lo.x + ARM).abs() < 1e-6);
     }
 
     #[test]

@@ -8,9 +8,11 @@ use std::time::Instant;
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
-use rigtform_render::demo::{contact_sheet, Comparison, Demo};
+use rigtform_render::demo::{
+    contact_sheet, gif_sequence, load_body, sheet_frames, Comparison, Demo,
+};
 use rigtform_render::output::{write_gif, write_png};
-use rigtform_render::{Cull, Image, Mesh, Msaa, Settings};
+use rigtform_render::{Cull, Image, Msaa, Settings};
 
 /// Renders keyframe animations of RigTForms: slerp side by side with
 /// lerping matrices and lerping Euler angles, and the same keyframes seen
@@ -104,14 +106,7 @@ fn run(args: &Args) -> Result<String, String> {
             args.sheet_rows, args.frames
         ));
     }
-    let body = match &args.obj {
-        Some(path) => Some(Mesh::load_obj(
-            path,
-            2.0 * rigtform_render::demo::ARM,
-            [0.8, 0.62, 0.35],
-        )?),
-        None => None,
-    };
+    let body = args.obj.as_deref().map(load_body).transpose()?;
     let demo = Demo::new(args.comparison, body);
     let settings = Settings {
         width: args.size.0,
@@ -119,12 +114,6 @@ fn run(args: &Args) -> Result<String, String> {
         msaa: if args.msaa == 4 { Msaa::X4 } else { Msaa::Off },
         cull: Cull::Back,
     };
-    let wide = demo.panels().len() as u32 * (settings.width + 4);
-    if !args.no_gif && wide > u32::from(u16::MAX) {
-        return Err(format!(
-            "frames {wide} pixels wide are too wide for a GIF; use --no-gif or a smaller --size"
-        ));
-    }
     let frames_dir = args.out.join("frames");
     std::fs::create_dir_all(&frames_dir)
         .map_err(|e| format!("cannot create {}: {e}", frames_dir.display()))?;
@@ -158,11 +147,9 @@ fn run(args: &Args) -> Result<String, String> {
     bar.finish_and_clear();
     let render_time = start.elapsed();
 
-    let rows: Vec<(f32, &Image)> = (0..args.sheet_rows)
-        .map(|r| {
-            let i = ((args.frames - 1) * r + (args.sheet_rows - 1) / 2) / (args.sheet_rows - 1);
-            (Demo::alpha(i, args.frames), &images[i as usize])
-        })
+    let rows: Vec<(f32, &Image)> = sheet_frames(args.frames, args.sheet_rows)
+        .into_iter()
+        .map(|i| (Demo::alpha(i, args.frames), &images[i as usize]))
         .collect();
     let sheet_path = args.out.join("contact_sheet.png");
     write_png(&sheet_path, &contact_sheet(&rows)).map_err(|e| e.to_string())?;
@@ -173,14 +160,7 @@ fn run(args: &Args) -> Result<String, String> {
         sheet_path.display()
     );
     if !args.no_gif {
-        // Forward, then back: a loop without a jump, resting a while on
-        // each keyframe.
-        let delay = (300 / args.frames).clamp(2, 20) as u16;
-        let last = images.len() - 1;
-        let there_and_back: Vec<(usize, u16)> = (0..=last)
-            .chain((1..last).rev())
-            .map(|i| (i, if i == 0 || i == last { 80 } else { delay }))
-            .collect();
+        let there_and_back = gif_sequence(args.frames);
         let gif_path = args.out.join("animation.gif");
         pool.install(|| write_gif(&gif_path, &images, &there_and_back))
             .map_err(|e| e.to_string())?;

@@ -418,9 +418,10 @@ mod tests {
 
     #[test]
     fn obj_normals_from_the_file_are_kept() {
-        let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 2\nf 1//1 2//1 3//1\n";
+        // Not the face's own normal (+z), so that computing it would show.
+        let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 2 0\nf 1//1 2//1 3//1\n";
         let mesh = load_obj_text("normals", text, 1.0).unwrap();
-        assert_eq!(mesh.normals, vec![Cvec3::Z; 3]);
+        assert_eq!(mesh.normals, vec![Cvec3::Y; 3]);
     }
 
     #[test]

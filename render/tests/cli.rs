@@ -71,10 +71,19 @@ fn demo_writes_frames_gif_and_contact_sheet() {
     // Five panels of 40 pixels with 4-pixel gaps, under the label bar.
     assert_eq!(frame.width(), 5 * 40 + 4 * 4);
     assert_eq!(frame.height(), 30 + rigtform_render::demo::LABEL_BAR);
-    // A shorter run into the same folder leaves no stale frames behind.
+    // A shorter run into the same folder leaves no stale frames behind,
+    // and leaves other files alone.
+    std::fs::write(dir.join("frames/notes.png"), "mine").unwrap();
+    std::fs::write(dir.join("frames/frame_list.txt"), "mine").unwrap();
     let o = run(&dir, "--size 40x30 --frames 2 --sheet-rows 2 --no-gif", &[]);
     assert!(o.status.success(), "{}", stderr(&o));
-    assert_eq!(files(&dir), &expected[..4]);
+    let mut expected = expected[..4].to_vec();
+    expected.extend([
+        "frames/frame_list.txt".to_string(),
+        "frames/notes.png".to_string(),
+    ]);
+    expected.sort();
+    assert_eq!(files(&dir), expected);
 }
 
 #[test]
@@ -94,6 +103,22 @@ fn output_is_identical_with_one_thread_and_with_four() {
         );
         assert!(a == b, "{f} differs between 1 and 4 threads");
     }
+}
+
+#[test]
+fn msaa_is_on_by_default_and_can_be_turned_off() {
+    let (four, default, one) = (scratch("msaa4"), scratch("msaa-default"), scratch("msaa1"));
+    let base = "--size 48x36 --frames 2 --sheet-rows 2 --no-gif";
+    for (dir, extra) in [(&four, " --msaa 4"), (&default, ""), (&one, " --msaa 1")] {
+        let o = run(dir, &format!("{base}{extra}"), &[]);
+        assert!(o.status.success(), "{}", stderr(&o));
+    }
+    let frame = |dir: &Path| read_png(&dir.join("frames/frame_001.png")).unwrap();
+    assert_eq!(frame(&four), frame(&default));
+    assert_ne!(frame(&four), frame(&one));
+    let o = run(&scratch("msaa2"), "--msaa 2", &[]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("1 or 4"), "{}", stderr(&o));
 }
 
 #[test]
