@@ -8,7 +8,8 @@ use common::{finite_edges, EDGE_F32};
 use core::f32::consts::PI;
 use rand::{Rng, SeedableRng};
 use rigtform::accuracy::{
-    MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, SLERP_MAX_ANGLE_ERROR, UNIT_NORM_ERROR,
+    MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, RENORMALIZED_CHAIN_NORM_ERROR,
+    SLERP_MAX_ANGLE_ERROR, UNIT_NORM_ERROR,
 };
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 
@@ -369,4 +370,49 @@ fn normalize_works_from_subnormal_to_max() {
             None => assert_eq!(q, Quat::new(0.0, 0.0, 0.0, 0.0)),
         }
     }
+}
+
+#[test]
+fn renormalized_product_chain_stays_unit() {
+    // A gyro integrator's chain: a million products of small random
+    // rotations (up to 0.1 rad each, from a fixed pool of 1,000).
+    let mut draws = common::Draws::new(30);
+    let steps: Vec<Quat> = (0..1000)
+        .map(|_| {
+            let axis = draws.unit_vec64();
+            let axis = Cvec3::new(axis.x as f32, axis.y as f32, axis.z as f32);
+            Quat::from_axis_angle(axis, draws.uniform(0.0, 0.1) as f32)
+        })
+        .collect();
+    let (mut plain, mut renormalized) = (Quat::IDENTITY, Quat::IDENTITY);
+    let (mut plain_drift, mut worst) = (0.0f32, 0.0f32);
+    for i in 0..1_000_000 {
+        let step = steps[i % steps.len()];
+        plain = plain * step;
+        renormalized = renormalized.mul_renormalized(step);
+        plain_drift = plain_drift.max((plain.norm() - 1.0).abs());
+        worst = worst.max((renormalized.norm() - 1.0).abs());
+    }
+    println!("1000000 products: plain drift {plain_drift:.3e}, renormalized {worst:.3e}");
+    assert!(worst <= RENORMALIZED_CHAIN_NORM_ERROR, "{worst}");
+}
+
+#[test]
+fn renormalized_product_is_the_same_rotation_as_the_plain_one() {
+    let mut draws = common::Draws::new(31);
+    for _ in 0..10_000 {
+        let (a, b) = (draws.unit_quat(), draws.unit_quat());
+        let (plain, renormalized) = (a * b, a.mul_renormalized(b));
+        assert!(
+            renormalized.angle_to(plain) <= MUL_MAX_ANGLE_ERROR,
+            "{a:?} {b:?}"
+        );
+        assert!(is_unit(renormalized, UNIT_NORM_ERROR), "{a:?} {b:?}");
+    }
+    // A drifted input comes back to unit in one step: a norm of 1 + e
+    // becomes 1 - 3 e^2 / 2 (1.5e-8 here), plus rounding.
+    let drifted = Quat::new(0.0, 0.0, 1.0 + 1e-4, 0.0);
+    let n = drifted.mul_renormalized(Quat::IDENTITY).norm();
+    assert!((n - 1.0).abs() <= UNIT_NORM_ERROR, "{n}");
+    assert!(is_nan_quat(Quat::NAN.mul_renormalized(Quat::IDENTITY)));
 }
