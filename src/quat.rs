@@ -55,6 +55,11 @@ struct Polar {
     phi: f32,
 }
 
+/// How far the ratio of two squared norms may be from 1 for slerp to treat
+/// the inputs as unit: well above the rounding of f32 unit quaternions
+/// (a few 1e-7), well below any real drift.
+const NEARLY_UNIT: f32 = 1e-6;
+
 impl Quat {
     /// The identity rotation `[1, 0, 0, 0]`.
     pub const IDENTITY: Self = Self::new(1.0, 0.0, 0.0, 0.0);
@@ -417,7 +422,7 @@ impl Quat {
         (square * square).normalize()
     }
 
-    /// Spherical linear interpolation, exactly as the notes define it:
+    /// Spherical linear interpolation, as the notes define it:
     /// `cn(other * self.inv()).pow(alpha) * self`.
     ///
     /// The rotation `other * self.inv()` that takes `self` to `other` is
@@ -432,12 +437,32 @@ impl Quat {
     /// - Identical, nearly identical, antipodal (`other == -self`) and
     ///   opposite (pi apart) inputs all give finite unit results; for
     ///   rotations exactly pi apart both ways are equally short, and the sign
-    ///   of the transition quaternion's tiny `w` picks one.
+    ///   of the rounded dot product picks one.
+    ///
+    /// # How it is evaluated
+    ///
+    /// `pow(alpha) * self` of the notes traces the great circle of the unit
+    /// 4-sphere through `self` and `other`, so for `alpha` in [0, 1] it is
+    /// evaluated in that plane, without the two f32 products (each of which
+    /// rounds by up to 2.5e-7 rad): the `w` of `other * self.inv()` is
+    /// `self.dot(other)` (its sign is the `cn`), its vector part has the
+    /// length of the part of `other` orthogonal to `self`, so the notes'
+    /// `phi` is the atan2 of the two, and the result is
+    /// `(sin((1 - alpha) phi) self + sin(alpha phi) other) / sin(phi)`.
+    /// Rounding errors common to both coefficients only scale the result,
+    /// and each endpoint is reached exactly. Like `pow`, this is
+    /// scale-free: inputs a little off unit norm still give the rotation
+    /// between them. For extrapolation (where the two coefficients grow
+    /// and their rounding would show in the norm), and with the `fast-math`
+    /// feature (whose sines have absolute, not relative, errors), the notes'
+    /// formula itself is evaluated (it rounds `alpha phi`, so its error grows
+    /// with the turn).
     ///
     /// # Preconditions
     ///
-    /// `self` and `other` are unit quaternions (the result has the norm of
-    /// `self`). NaN or infinite inputs give [`Quat::NAN`].
+    /// `self` and `other` are unit quaternions, or nearly so (the result has
+    /// the norm of `self`, up to rounding). NaN or infinite inputs give
+    /// [`Quat::NAN`]. Every finite `alpha` works (see [`pow`](Self::pow)).
     ///
     /// # Accuracy
     ///
@@ -462,7 +487,60 @@ impl Quat {
     /// ```
     #[must_use]
     pub fn slerp(self, other: Self, alpha: f32) -> Self {
-        (other * self.inv()).cn().pow(alpha) * self
+        if !(self.is_finite() && other.is_finite() && alpha.is_finite()) {
+            return Self::NAN;
+        }
+        // The w of other * self.inv(); cn flips other when it is negative.
+        let dot = self.dot(other);
+        let (other, dot) = if dot < 0.0 {
+            (-other, -dot)
+        } else {
+            (other, dot)
+        };
+        // The part of other orthogonal to self, times |self|^2 (exactly
+        // orthogonal for any norm of self, in exact arithmetic), scaled by
+        // a power of two if its squares would underflow.
+        let n2 = self.norm_squared();
+        let u = scale_for_squares(other.weighted_sum(n2, self, -dot).to_array());
+        if u.sum == 0.0 {
+            // Identical or antipodal (or a zero input): the transition is
+            // the identity, and so is its every power.
+            return self;
+        }
+        if alpha == 0.0 {
+            return self;
+        }
+        // The notes' formula itself further out, and with fast-math, whose
+        // sines are off by about 1e-3 absolute: divided by a small sin(phi),
+        // that would be far off in relative terms.
+        if cfg!(feature = "fast-math") || !(0.0..=1.0).contains(&alpha) {
+            return other.mul(self.inv()).pow(alpha) * self;
+        }
+        // |u| = |self|^3 |other| sin(phi) and |self| dot = |self|^3 |other|
+        // cos(phi), the notes' phi in [0, pi/2].
+        let n = float::sqrt(n2);
+        let phi = float::atan2(float::sqrt(u.sum), n * dot * u.scale);
+        // alpha phi and (1 - alpha) phi add up to phi exactly where f32
+        // allows (Sterbenz), so that the result stays on the arc.
+        let far = alpha * phi;
+        let near = phi - far;
+        // A rounding error common to both coefficients (that of 1 / sin(phi)
+        // here) changes the norm, not the rotation.
+        let r = 1.0 / float::sin_cos(phi).0;
+        // For inputs off unit norm, other / |other| * |self| is the endpoint
+        // on self's sphere. Within rounding of unit norm the factor is taken
+        // as 1: computed, it would be off by as much as it corrects.
+        let ratio = n2 / other.norm_squared();
+        let r1 = if (ratio - 1.0).abs() > NEARLY_UNIT {
+            r * float::sqrt(ratio)
+        } else {
+            r
+        };
+        self.weighted_sum(
+            float::sin_cos(near).0 * r,
+            other,
+            float::sin_cos(far).0 * r1,
+        )
     }
 
     /// Normalized linear interpolation: aligns the sign of `other` with
