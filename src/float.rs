@@ -258,7 +258,10 @@ const ATAN2_ULP: f64 = 1.6; // 1.291 at t = 0.54892975
 #[inline]
 fn atan_poly(u: f32) -> f32 {
     let s = u * u;
-    let p = ATAN[0] + s * (ATAN[1] + s * (ATAN[2] + s * (ATAN[3] + s * (ATAN[4] + s * ATAN[5]))));
+    // Estrin's scheme: three independent pairs, then two steps in s^2
+    // (a shorter chain of dependent operations than Horner's).
+    let s2 = s * s;
+    let p = (ATAN[0] + s * ATAN[1]) + s2 * ((ATAN[2] + s * ATAN[3]) + s2 * (ATAN[4] + s * ATAN[5]));
     u + u * (s * p)
 }
 
@@ -310,43 +313,68 @@ fn sum_and_tail(hi: f32, lo: f32) -> (f32, f32) {
 /// in [0, 1] as `(t, 1)`, `(1, t)`, `(t, -1)`, `(1, -t)` and `(1 + t, 1)`;
 /// `atan2_kernel_is_within_its_bound_on_random_pairs` takes pairs at every
 /// scale).
+#[inline]
 #[must_use]
 pub(crate) fn atan2_kernel(y: f32, x: f32) -> f32 {
     let (b, a) = (y.abs(), x.abs());
-    let phi = if b <= a * TAN_HALF {
-        // At most 1/2 rad, including b == 0 (where b / a may be 0 / 0) and a
-        // infinite (where b / a is 0, or inf / inf if b is infinite too).
-        if b == 0.0 {
-            0.0
-        } else if b == f32::INFINITY {
-            PIO4_HI
-        } else {
-            atan_poly(b / a)
-        }
-    } else if a <= b * TAN_HALF {
-        // At least pi/2 - 1/2, including a == 0 and b infinite (a is not).
-        PIO2_HI - (atan_poly(a / b) - PIO2_LO)
+    // Zeros, infinities, NaN and sums beyond f32::MAX take the cold path,
+    // so that the common one has no branch the data can mispredict.
+    if !(a + b < f32::INFINITY && a + b > 0.0) {
+        return atan2_of_extremes(y, x);
+    }
+    // The angle of (a, b) in [0, pi/2] as hi + atan(num / den) + lo: at
+    // most 1/2 rad, at least pi/2 - 1/2, or between, where a and b are
+    // within a factor 2 of each other. Selected by bit masks, which compile
+    // to no branch.
+    let (low, high) = (b <= a * TAN_HALF, a <= b * TAN_HALF);
+    let num = select(low, b, select(high, -a, b - a));
+    let den = select(low, a, select(high, b, b + a));
+    let hi = select(low, 0.0, select(high, PIO2_HI, PIO4_HI));
+    let lo = select(low, 0.0, select(high, PIO2_LO, PIO4_LO));
+    let phi = hi + (atan_poly(num / den) + lo);
+    let phi = select(x.is_sign_negative(), PI_HI - (phi - PI_LO), phi);
+    // phi >= 0: the sign of y is the sign of the result.
+    f32::from_bits(phi.to_bits() | (y.to_bits() & SIGN))
+}
+
+/// The sign bit of an f32.
+const SIGN: u32 = 0x8000_0000;
+
+/// `if c { a } else { b }`, by bit masks: no branch for the data to
+/// mispredict (both values are computed anyway).
+#[inline]
+fn select(c: bool, a: f32, b: f32) -> f32 {
+    let mask = u32::from(c).wrapping_neg();
+    f32::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))
+}
+
+/// [`atan2_kernel`] where `|x| + |y|` is zero, infinite or NaN: IEEE 754's
+/// values for zeros and infinities, NaN for NaN, and finite arguments too
+/// large to add scaled down by 4 (exactly).
+#[cold]
+fn atan2_of_extremes(y: f32, x: f32) -> f32 {
+    let (b, a) = (y.abs(), x.abs());
+    let phi = if a.is_nan() || b.is_nan() {
+        return f32::NAN;
+    } else if b == 0.0 {
+        0.0
+    } else if a == 0.0 {
+        PIO2_HI
+    } else if a.is_infinite() && b.is_infinite() {
+        PIO4_HI
+    } else if a.is_infinite() {
+        0.0
+    } else if b.is_infinite() {
+        PIO2_HI
     } else {
-        // Between 1/2 and pi/2 - 1/2, both finite: a and b are within a
-        // factor 2 of each other, so b + a can only overflow when both are huge,
-        // and a quarter of each is then exact. NaN arrives here and stays NaN.
-        let (d, s) = if b > 1e37 {
-            (b * 0.25 - a * 0.25, b * 0.25 + a * 0.25)
-        } else {
-            (b - a, b + a)
-        };
-        PIO4_HI + (atan_poly(d / s) + PIO4_LO)
+        return atan2_kernel(y * 0.25, x * 0.25);
     };
     let phi = if x.is_sign_negative() {
-        PI_HI - (phi - PI_LO)
+        PI_HI - phi
     } else {
         phi
     };
-    if y.is_sign_negative() {
-        -phi
-    } else {
-        phi
-    }
+    f32::from_bits(phi.to_bits() | (y.to_bits() & SIGN))
 }
 
 /// The f32-only sine and cosine of the default backend (see [`sin_cos`]).
@@ -360,29 +388,73 @@ pub(crate) fn atan2_kernel(y: f32, x: f32) -> f32 {
 ///
 /// Within 1 ulp for `|x| <= 3 pi/4` ([`SIN_COS_NARROW_ULP`]) and 1.25 ulp
 /// beyond ([`SIN_COS_ULP`]); NaN for NaN and infinite `x`.
+#[inline]
 #[must_use]
 pub(crate) fn sin_cos_kernel(x: f32) -> (f32, f32) {
     let a = x.abs();
-    let (s, c) = if a <= core::f32::consts::FRAC_PI_4 {
-        (sin_poly(a, 0.0), cos_poly(a, 0.0))
-    } else if a <= THREE_PI_4 {
-        // pi/2 - a: the head's difference is exact (Sterbenz: a lies within
-        // a factor 2 of PIO2_HI), the tail is kept.
-        let (r, t) = sum_and_tail(PIO2_HI - a, PIO2_LO);
-        (cos_poly(r, t), sin_poly(r, t))
-    } else if a.is_finite() {
-        let (quadrant, r, t) = reduce_by_quarter_turns(a);
-        let (s, c) = (sin_poly(r, t), cos_poly(r, t));
-        match quadrant {
-            0 => (s, c),
-            1 => (c, -s),
-            2 => (-s, -c),
-            _ => (-c, s),
-        }
+    if a > THREE_PI_4 || a.is_nan() {
+        return sin_cos_reduced(x);
+    }
+    let (s, c) = sin_cos_quarter(a);
+    // s >= 0 here: the sign of x is the sign of the sine.
+    (f32::from_bits(s.to_bits() | (x.to_bits() & SIGN)), c)
+}
+
+/// Sine and cosine of `0 <= a <= 3 pi/4`, without a branch (so that
+/// random arguments cost no mispredicted branch, and two calls side by side
+/// can share vector instructions). Within a quarter turn of 0: `r + t` is
+/// `a` itself, or `pi/2 - a` with sine and cosine swapped, whose head's
+/// difference is exact (Sterbenz: `a` lies within a factor 2 of `PIO2_HI`)
+/// and whose tail is kept. Within [`SIN_COS_NARROW_ULP`].
+#[inline]
+fn sin_cos_quarter(a: f32) -> (f32, f32) {
+    let swap = a > core::f32::consts::FRAC_PI_4;
+    let (r, t) = if swap {
+        sum_and_tail(PIO2_HI - a, PIO2_LO)
     } else {
-        (f32::NAN, f32::NAN)
+        (a, 0.0)
     };
-    (if x.is_sign_negative() { -s } else { s }, c)
+    let (s, c) = (sin_poly(r, t), cos_poly(r, t));
+    if swap {
+        (c, s)
+    } else {
+        (s, c)
+    }
+}
+
+/// Sines of three angles, each in [0, 3 pi/4]: the three that slerp
+/// needs, side by side (as one vector operation where the target has them),
+/// with the accuracy of [`sin_cos`] (default backend: within
+/// [`SIN_COS_NARROW_ULP`]). Arguments outside the range get no reduction:
+/// the caller guarantees the range.
+#[inline]
+#[must_use]
+pub(crate) fn sin3(a: f32, b: f32, c: f32) -> (f32, f32, f32) {
+    (
+        sin_cos_quarter(a).0,
+        sin_cos_quarter(b).0,
+        sin_cos_quarter(c).0,
+    )
+}
+
+/// [`sin_cos_kernel`] beyond 3 pi/4, by [`reduce_by_quarter_turns`]; NaN
+/// for NaN and infinities.
+#[cold]
+fn sin_cos_reduced(x: f32) -> (f32, f32) {
+    let a = x.abs();
+    if !a.is_finite() {
+        return (f32::NAN, f32::NAN);
+    }
+    let (quadrant, r, t) = reduce_by_quarter_turns(a);
+    let (s, c) = (sin_poly(r, t), cos_poly(r, t));
+    let (s, c) = match quadrant {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    };
+    // sin(-x) = -sin(x): flip the sign bit with x's.
+    (f32::from_bits(s.to_bits() ^ (x.to_bits() & SIGN)), c)
 }
 
 /// `a = quadrant * pi/2 + r + t` with `|r| <= pi/4` and a tail `t` below
@@ -482,6 +554,7 @@ impl ScaledSquares {
 /// and vectors with components up to `f32::MAX` keep full precision. The
 /// resulting norm is within 2 ulp (`normalize_is_within_its_bound_from_subnormal_to_huge`
 /// in `tests/differential.rs` measures 1.653 ulp over 10^7 draws).
+#[inline]
 #[must_use]
 pub(crate) fn scale_for_squares(v: [f32; 4]) -> ScaledSquares {
     let sum = sum_of_squares(v);

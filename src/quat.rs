@@ -59,6 +59,9 @@ struct Polar {
 /// the inputs as unit: well above the rounding of f32 unit quaternions
 /// (a few 1e-7), well below any real drift.
 const NEARLY_UNIT: f32 = 1e-6;
+/// 2^-12 rad: below this, `sin(x) / sin(phi)` is `x / phi` to f32's
+/// precision (the two differ by less than `phi^2 / 6`, 2^-26).
+const SMALL_ANGLE: f32 = 1.0 / 4096.0;
 
 impl Quat {
     /// The identity rotation `[1, 0, 0, 0]`.
@@ -490,24 +493,25 @@ impl Quat {
         if !(self.is_finite() && other.is_finite() && alpha.is_finite()) {
             return Self::NAN;
         }
-        // The w of other * self.inv(); cn flips other when it is negative.
+        // The w of other * self.inv(); cn flips other when it is negative
+        // (multiplying by the sign, exactly, rather than branching on it).
         let dot = self.dot(other);
-        let (other, dot) = if dot < 0.0 {
-            (-other, -dot)
-        } else {
-            (other, dot)
-        };
+        let flip = 1.0f32.copysign(dot);
+        let other = Self::new(
+            other.w * flip,
+            other.x * flip,
+            other.y * flip,
+            other.z * flip,
+        );
+        let dot = dot * flip;
         // The part of other orthogonal to self, times |self|^2 (exactly
         // orthogonal for any norm of self, in exact arithmetic), scaled by
         // a power of two if its squares would underflow.
         let n2 = self.norm_squared();
         let u = scale_for_squares(other.weighted_sum(n2, self, -dot).to_array());
-        if u.sum == 0.0 {
+        if u.sum == 0.0 || alpha == 0.0 {
             // Identical or antipodal (or a zero input): the transition is
-            // the identity, and so is its every power.
-            return self;
-        }
-        if alpha == 0.0 {
+            // the identity, and so is its every power. And alpha = 0.
             return self;
         }
         // The notes' formula itself further out, and with fast-math, whose
@@ -516,31 +520,36 @@ impl Quat {
         if cfg!(feature = "fast-math") || !(0.0..=1.0).contains(&alpha) {
             return other.mul(self.inv()).pow(alpha) * self;
         }
-        // |u| = |self|^3 |other| sin(phi) and |self| dot = |self|^3 |other|
-        // cos(phi), the notes' phi in [0, pi/2].
-        let n = float::sqrt(n2);
-        let phi = float::atan2(float::sqrt(u.sum), n * dot * u.scale);
+        // |u| = |self|^3 |other| sin(phi) and d = |self| dot = |self|^3
+        // |other| cos(phi), both times u.scale: the notes' phi in [0, pi/2].
+        let u_norm = float::sqrt(u.sum);
+        let d = float::sqrt(n2) * dot * u.scale;
+        let phi = float::atan2(u_norm, d);
         // alpha phi and (1 - alpha) phi add up to phi exactly where f32
         // allows (Sterbenz), so that the result stays on the arc.
         let far = alpha * phi;
         let near = phi - far;
-        // A rounding error common to both coefficients (that of 1 / sin(phi)
-        // here) changes the norm, not the rotation.
-        let r = 1.0 / float::sin_cos(phi).0;
+        let (c0, c1) = if phi > SMALL_ANGLE {
+            // near, far and phi lie in [0, pi/2]. The rounding error of
+            // 1 / sin(phi) is common to both coefficients: it changes the
+            // norm, not the rotation.
+            let (s0, s1, sin_phi) = float::sin3(near, far, phi);
+            let r = 1.0 / sin_phi;
+            (s0 * r, s1 * r)
+        } else {
+            // sin(x) / sin(phi) is x / phi within 2^-26 here.
+            (near / phi, far / phi)
+        };
         // For inputs off unit norm, other / |other| * |self| is the endpoint
         // on self's sphere. Within rounding of unit norm the factor is taken
         // as 1: computed, it would be off by as much as it corrects.
-        let ratio = n2 / other.norm_squared();
-        let r1 = if (ratio - 1.0).abs() > NEARLY_UNIT {
-            r * float::sqrt(ratio)
+        let on2 = other.norm_squared();
+        let c1 = if (n2 - on2).abs() > NEARLY_UNIT * on2 {
+            c1 * float::sqrt(n2 / on2)
         } else {
-            r
+            c1
         };
-        self.weighted_sum(
-            float::sin_cos(near).0 * r,
-            other,
-            float::sin_cos(far).0 * r1,
-        )
+        self.weighted_sum(c0, other, c1)
     }
 
     /// Normalized linear interpolation: aligns the sign of `other` with
