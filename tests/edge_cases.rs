@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{finite_edges, EDGE_F32};
+use common::{edge_quats, finite_edges};
 use core::f32::consts::PI;
 use rand::{Rng, SeedableRng};
 use rigtform::accuracy::{
@@ -12,17 +12,6 @@ use rigtform::accuracy::{
     SLERP_MAX_ANGLE_ERROR, UNIT_NORM_ERROR,
 };
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
-
-/// Every quaternion whose components are all edge values: 24^4 of them.
-fn edge_quats() -> impl Iterator<Item = Quat> {
-    EDGE_F32.into_iter().flat_map(|w| {
-        EDGE_F32.into_iter().flat_map(move |x| {
-            EDGE_F32
-                .into_iter()
-                .flat_map(move |y| EDGE_F32.into_iter().map(move |z| Quat::new(w, x, y, z)))
-        })
-    })
-}
 
 /// The documented error of a power that turns by `turn` radians, plus the
 /// product inside `angle_to` that measures it.

@@ -6,40 +6,12 @@
 use nalgebra as na;
 use proptest::prelude::*;
 use rigtform::{Cvec3, Quat, RigTForm};
+use rigtform_proofs::reference::Quat64;
 
-/// libm-style edge values: walking out from 0, +-1, subnormals, the largest
-/// finite value, infinities and NaN.
-pub const EDGE_F32: [f32; 24] = [
-    0.0,
-    -0.0,
-    1e-45, // smallest subnormal
-    -1e-45,
-    1e-40, // subnormal
-    f32::MIN_POSITIVE,
-    1e-30,
-    1e-7,
-    -1e-7,
-    0.5,
-    1.0,
-    -1.0,
-    0.999_999_9, // 1 - ulp
-    1.000_000_1, // 1 + ulp
-    2.0,
-    -3.5,
-    1e7,
-    1e30,
-    -1e30,
-    f32::MAX,
-    -f32::MAX,
-    f32::INFINITY,
-    f32::NEG_INFINITY,
-    f32::NAN,
-];
-
-/// The finite entries of [`EDGE_F32`].
-pub fn finite_edges() -> impl Iterator<Item = f32> {
-    EDGE_F32.into_iter().filter(|x| x.is_finite())
-}
+/// The edge values (zeros, subnormals, +-1, 1 +- ulp, 1e30, `f32::MAX`,
+/// infinities, NaN) that the proofs, fuzz seeds and on-target tests share.
+#[allow(unused_imports)] // each test file uses a different part
+pub use rigtform_proofs::edge::{edge_quats, finite_edges, EDGE_F32};
 
 /// A point drawn uniformly in the 4-cube, kept if it lies in the unit ball
 /// (away from the origin) and projected onto the sphere: rejection sampling
@@ -112,8 +84,7 @@ pub fn vec_to_f64(v: Cvec3) -> na::Vector3<f64> {
 /// The angle of the rotation between two quaternions, up to sign and
 /// scale, in f64: `2 atan2(|v|, |w|)` of `b^-1 a` (accurate near 0 and pi).
 pub fn rotation_angle64(a: na::Quaternion<f64>, b: na::Quaternion<f64>) -> f64 {
-    let d = b.conjugate() * a;
-    2.0 * d.imag().norm().atan2(d.w.abs())
+    Quat64::angle_between(to_reference(a), to_reference(b))
 }
 
 /// The angle between a computed f32 rotation and an f64 reference.
@@ -121,25 +92,24 @@ pub fn angle_error(got: Quat, want: na::Quaternion<f64>) -> f64 {
     rotation_angle64(to_f64(got), want)
 }
 
-/// The notes' power operator in f64: `phi = atan2(|v|, w)`,
+fn to_reference(q: na::Quaternion<f64>) -> Quat64 {
+    Quat64 {
+        w: q.w,
+        x: q.i,
+        y: q.j,
+        z: q.k,
+    }
+}
+
+fn from_reference(q: Quat64) -> na::Quaternion<f64> {
+    na::Quaternion::new(q.w, q.x, q.y, q.z)
+}
+
+/// The notes' power operator in f64 (`rigtform_proofs::reference`, which
+/// the on-target tests use too): `phi = atan2(|v|, w)`,
 /// `(cos(alpha phi), sin(alpha phi) v/|v|)`; pure real negative turns about x.
 pub fn pow64(q: na::Quaternion<f64>, alpha: f64) -> na::Quaternion<f64> {
-    let v = q.imag();
-    let beta = v.norm();
-    let (axis, phi) = if beta == 0.0 {
-        (
-            na::Vector3::x(),
-            if q.w < 0.0 {
-                core::f64::consts::PI
-            } else {
-                0.0
-            },
-        )
-    } else {
-        (v / beta, beta.atan2(q.w))
-    };
-    let (s, c) = (alpha * phi).sin_cos();
-    na::Quaternion::from_parts(c, axis * s)
+    from_reference(to_reference(q).pow(alpha))
 }
 
 /// `pow(cn(q1 q0^-1), alpha) q0` in f64, on the normalized inputs.
@@ -148,12 +118,11 @@ pub fn slerp64(
     q1: na::Quaternion<f64>,
     alpha: f64,
 ) -> na::Quaternion<f64> {
-    let (q0, q1) = (q0.normalize(), q1.normalize());
-    let mut d = q1 * q0.conjugate();
-    if d.w < 0.0 {
-        d = -d;
-    }
-    pow64(d, alpha) * q0
+    from_reference(Quat64::slerp(
+        to_reference(q0.normalize()),
+        to_reference(q1.normalize()),
+        alpha,
+    ))
 }
 
 /// The documented pow error (`accuracy::POW_MAX_ANGLE_ERROR`) for a turn of

@@ -1,0 +1,33 @@
+//! `pow` on raw bit patterns: the atan2 edge cases of the contract (zero,
+//! subnormal and huge vector parts, `w = +-1`, `w = 0`, any exponent).
+//! Finite in, finite unit out; NaN or infinity in, NaN out; and `cn` and
+//! `inv` keep their exact laws on every input.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use rigtform::Quat;
+use rigtform_proofs::laws::{self, Verdict};
+
+#[derive(arbitrary::Arbitrary, Debug)]
+struct Input {
+    q: [f32; 4],
+    alpha: f32,
+}
+
+fn holds(verdict: Verdict) {
+    if let Err(v) = verdict {
+        panic!("{v:?}");
+    }
+}
+
+fuzz_target!(|input: Input| {
+    let [w, x, y, z] = input.q;
+    let q = Quat::new(w, x, y, z);
+    if q.is_finite() && input.alpha.is_finite() {
+        holds(laws::pow_is_unit(q, input.alpha));
+    } else {
+        holds(laws::pow_of_non_finite_is_nan(q, input.alpha));
+    }
+    holds(laws::cn_gives_non_negative_w_and_the_same_rotation(q));
+    holds(laws::inverse_is_an_involution(q));
+});

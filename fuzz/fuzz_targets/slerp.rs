@@ -1,0 +1,83 @@
+//! `slerp`, `nlerp` and `blend` on raw bit patterns (contract item 3):
+//! unit results for unit inputs and every finite alpha, exactness at
+//! alpha = 0, the short way at constant angular velocity, NaN out for NaN
+//! in, and no panic on anything.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use rigtform::Quat;
+use rigtform_proofs::laws::{self, Verdict};
+
+#[derive(arbitrary::Arbitrary, Debug)]
+struct Input {
+    a: [f32; 4],
+    b: [f32; 4],
+    c: [f32; 4],
+    alpha: f32,
+    weights: [f32; 3],
+}
+
+fn holds(verdict: Verdict) {
+    if let Err(v) = verdict {
+        panic!("{v:?}");
+    }
+}
+
+const ZERO: Quat = Quat::new(0.0, 0.0, 0.0, 0.0);
+/// 2^60: inputs within it keep `b a^-1` finite.
+const LIMIT: f32 = 1.152_921_5e18;
+
+fn quat([w, x, y, z]: [f32; 4]) -> Quat {
+    Quat::new(w, x, y, z)
+}
+
+/// The unit quaternion of a finite non-zero input.
+fn unit(q: Quat) -> Option<Quat> {
+    (q.is_finite() && q != ZERO).then(|| q.normalize())
+}
+
+fn within_limit(q: Quat) -> bool {
+    [q.w, q.x, q.y, q.z].iter().all(|c| c.abs() <= LIMIT)
+}
+
+fuzz_target!(|input: Input| {
+    let (a, b, c) = (quat(input.a), quat(input.b), quat(input.c));
+    let alpha = input.alpha;
+
+    // No panic on anything; NaN or infinity in, NaN out.
+    let _ = (a.slerp(b, alpha), a.nlerp(b, alpha));
+    let entries = [
+        (a, input.weights[0]),
+        (b, input.weights[1]),
+        (c, input.weights[2]),
+    ];
+    let _ = Quat::blend(&entries);
+    if !(a.is_finite() && b.is_finite() && alpha.is_finite()) {
+        holds(laws::slerp_of_non_finite_is_nan(a, b, alpha));
+    }
+    if within_limit(a) && within_limit(b) {
+        holds(laws::slerp_is_exact_at_zero(a, b));
+    }
+
+    let (Some(ua), Some(ub), Some(uc)) = (unit(a), unit(b), unit(c)) else {
+        return;
+    };
+    if alpha.is_finite() {
+        holds(laws::slerp_is_unit(ua, ub, alpha));
+    }
+    // Identical and antipodal pairs, whatever the fuzzer drew for b.
+    holds(laws::slerp_is_unit(ua, ua, 0.5));
+    holds(laws::slerp_is_unit(ua, -ua, 0.5));
+    holds(laws::slerp_reaches_the_rotation_of_b_at_one(ua, ub));
+    if (0.0..=1.0).contains(&alpha) {
+        holds(laws::slerp_turns_by_alpha_times_the_angle(ua, ub, alpha));
+        holds(laws::nlerp_is_unit(ua, ub, alpha));
+    }
+    if input.weights.iter().all(|w| w.abs() <= LIMIT) {
+        holds(laws::blend_is_unit_or_identity(&[
+            (ua, input.weights[0]),
+            (ub, input.weights[1]),
+            (uc, input.weights[2]),
+        ]));
+    }
+});

@@ -1,0 +1,76 @@
+//! The contracts of the float kernels that the Kani harnesses stub.
+//!
+//! A model checker cannot follow libm's `sincosf` (a table-driven f64
+//! argument reduction) or its x86 `sqrtf` (inline assembly), so the
+//! harnesses replace them (`src/stubs.rs`) by "any value that meets the
+//! contract". That is sound only if the real kernels meet the contracts:
+//! `tests/contracts.rs` checks them against libm on edge values and random
+//! bit patterns. The contracts are deliberately weak (ranges and the
+//! Pythagorean identity, not accuracy): what the unit-norm laws need.
+
+use rigtform::accuracy::SIN_COS_MAX_ABS_ERROR;
+
+/// `sin^2 + cos^2` is within this of 1: each of the two is within
+/// `SIN_COS_MAX_ABS_ERROR` of the truth, and `2 (|s| + |c|) <= 2 sqrt 2 < 3`.
+pub const PYTHAGORAS_TOL: f64 = 3.0 * SIN_COS_MAX_ABS_ERROR as f64;
+
+/// `sqrt(x)^2` is within this relative error of `x`: a correctly rounded
+/// square root is off by at most half an ulp, `u = 2^-24` relative, and
+/// `(1 + u)^2 - 1 <= 2u + u^2`.
+pub const SQRT_SQUARED_REL_TOL: f64 = 2.0 / 16_777_216.0 + 1.0 / 281_474_976_710_656.0;
+
+/// What `sincosf(x) = (s, c)` promises: NaN for NaN or infinite `x`;
+/// exactly `(x, 1)` at `x = +-0`; otherwise both in `[-1, 1]` and
+/// `|s^2 + c^2 - 1| <= PYTHAGORAS_TOL`.
+///
+/// ```
+/// use rigtform_proofs::contracts::sin_cos;
+/// assert!(sin_cos(0.5, libm::sinf(0.5), libm::cosf(0.5)));
+/// assert!(!sin_cos(0.5, 0.5, 0.5));
+/// ```
+pub fn sin_cos(x: f32, s: f32, c: f32) -> bool {
+    if !x.is_finite() {
+        return s.is_nan() && c.is_nan();
+    }
+    if x == 0.0 {
+        return s.to_bits() == x.to_bits() && c == 1.0;
+    }
+    let (s64, c64) = (f64::from(s), f64::from(c));
+    s.abs() <= 1.0 && c.abs() <= 1.0 && (s64 * s64 + c64 * c64 - 1.0).abs() <= PYTHAGORAS_TOL
+}
+
+/// What `atan2f(y, x) = phi` promises: NaN if either argument is NaN;
+/// otherwise `phi` in `[-pi, pi]` (the `f32` nearest pi bounding it), with
+/// the sign of `y` (atan2 is odd in `y`, signed zeros included).
+///
+/// ```
+/// use rigtform_proofs::contracts::atan2;
+/// assert!(atan2(1.0, -1.0, libm::atan2f(1.0, -1.0)));
+/// assert!(!atan2(1.0, -1.0, -2.0));
+/// ```
+pub fn atan2(y: f32, x: f32, phi: f32) -> bool {
+    if y.is_nan() || x.is_nan() {
+        return phi.is_nan();
+    }
+    phi.abs() <= core::f32::consts::PI && phi.is_sign_negative() == y.is_sign_negative()
+}
+
+/// What `sqrtf(x) = r` promises: NaN for NaN or negative `x` (but `-0`
+/// gives `-0`); `r == x` at zero and infinity; otherwise `r > 0` with
+/// `|r^2 - x| <= SQRT_SQUARED_REL_TOL x`.
+///
+/// ```
+/// use rigtform_proofs::contracts::sqrt;
+/// assert!(sqrt(2.0, libm::sqrtf(2.0)));
+/// assert!(!sqrt(2.0, 1.5));
+/// ```
+pub fn sqrt(x: f32, r: f32) -> bool {
+    if x.is_nan() || x < 0.0 {
+        return r.is_nan();
+    }
+    if x == 0.0 || x == f32::INFINITY {
+        return r.to_bits() == x.to_bits();
+    }
+    let (x64, r64) = (f64::from(x), f64::from(r));
+    r > 0.0 && (r64 * r64 - x64).abs() <= SQRT_SQUARED_REL_TOL * x64
+}

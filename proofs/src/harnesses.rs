@@ -1,0 +1,361 @@
+//! Kani proof harnesses over the laws of [`crate::laws`].
+//!
+//! Under `cargo kani -p rigtform-proofs` (where Kani is installed) each
+//! harness is a proof over every input its assumptions allow. Everywhere
+//! else (`cargo test`), the same body runs as an ordinary test through the
+//! stand-in in `src/kani.rs`, on 50,000 random draws: that is testing, not
+//! proof. Kani is not installable on the machines this crate is developed
+//! on, so none of these harnesses has been proven there; the proof times
+//! below are for whoever runs Kani ("not run yet" until someone does).
+//!
+//! Every assumption is marked **precondition** (the law's own, from its
+//! docs) or **solver bound** (narrower than the law allows, only to keep the
+//! model checker's float arithmetic tractable and every product finite:
+//! Kani checks for NaN and overflow). Harnesses that call libm's kernels
+//! stub them by their contracts (`src/stubs.rs`), so a proof covers every
+//! kernel that meets the contract, libm included (`tests/contracts.rs`).
+//! They check the default (libm) backend; `fast-math`'s kernels are not
+//! stubbed and not model-checked.
+
+#[cfg(not(kani))]
+use crate::kani;
+use crate::laws::{self, Verdict};
+use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+
+/// Runs `body` once under Kani (symbolically: once is all inputs), or on
+/// many random draws under the stand-in.
+fn check(name: &str, body: impl Fn()) {
+    #[cfg(kani)]
+    {
+        let _ = name;
+        body();
+    }
+    #[cfg(not(kani))]
+    crate::kani::run(name, body);
+}
+
+fn assert_law(verdict: Verdict) {
+    assert!(verdict.is_ok(), "{verdict:?}");
+}
+
+/// Any finite `f32`.
+fn any_finite() -> f32 {
+    kani::any_where(|x: &f32| x.is_finite())
+}
+
+/// Any `f32` of magnitude at most `limit` (NaN excluded).
+fn any_within(limit: f32) -> f32 {
+    kani::any_where(move |x: &f32| x.abs() <= limit)
+}
+
+/// Any quaternion with components of magnitude at most `limit`.
+fn any_quat_within(limit: f32) -> Quat {
+    Quat::new(
+        any_within(limit),
+        any_within(limit),
+        any_within(limit),
+        any_within(limit),
+    )
+}
+
+/// Any vector with components of magnitude at most `limit`.
+fn any_vec_within(limit: f32) -> Cvec3 {
+    Cvec3::new(any_within(limit), any_within(limit), any_within(limit))
+}
+
+/// Any finite quaternion.
+fn any_finite_quat() -> Quat {
+    Quat::new(any_finite(), any_finite(), any_finite(), any_finite())
+}
+
+/// A unit quaternion as the laws' preconditions mean it: any finite
+/// non-zero quaternion, normalized (which [`normalize_is_unit`] checks
+/// lands within the laws' tolerance).
+fn any_unit_quat() -> Quat {
+    let q = any_finite_quat();
+    // Precondition of normalize_is_unit: not zero.
+    kani::assume(q != Quat::new(0.0, 0.0, 0.0, 0.0));
+    q.normalize()
+}
+
+/// 2^20: a solver bound on translations and vectors, far inside the laws'
+/// 2^40, and beyond any scene or sensor value in metres.
+const MILLION: f32 = 1_048_576.0;
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(not(kani), test)]
+fn quat_product_multiplies_norms() {
+    check("quat_product_multiplies_norms", || {
+        // Solver bound: components within 2^20 (the law allows 2^40).
+        let (a, b) = (any_quat_within(MILLION), any_quat_within(MILLION));
+        // Precondition: squared norms in [2^-40, 2^40] (no underflow).
+        let n = |q: Quat| f64::from(q.norm_squared());
+        kani::assume((9.1e-13..=1.1e12).contains(&n(a)) && (9.1e-13..=1.1e12).contains(&n(b)));
+        assert_law(laws::product_norm_is_multiplicative(a, b));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(not(kani), test)]
+fn quat_rotation_preserves_length() {
+    check("quat_rotation_preserves_length", || {
+        let q = any_unit_quat();
+        // Solver bound: components within 2^20 (the law allows 2^40).
+        let v = any_vec_within(MILLION);
+        assert_law(laws::rotation_preserves_length(q, v));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(not(kani), test)]
+fn normalize_is_unit_from_subnormal_to_max() {
+    check("normalize_is_unit_from_subnormal_to_max", || {
+        // Precondition: finite and not zero. No solver bound: normalize's
+        // exact power-of-two rescaling is the point.
+        let q = any_finite_quat();
+        kani::assume(q != Quat::new(0.0, 0.0, 0.0, 0.0));
+        assert_law(laws::normalize_is_unit(q));
+    });
+}
+
+/// The atan2 edge cases of the contract: zero, subnormal and huge vector
+/// parts, `w = +-1`, `w = 0`, non-unit inputs, any finite `alpha`.
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // scaled sums of squares over four components
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
+#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(not(kani), test)]
+fn pow_is_unit_for_every_finite_input() {
+    check("pow_is_unit_for_every_finite_input", || {
+        // Preconditions: finite quaternion and exponent. No solver bound.
+        let q = any_finite_quat();
+        let alpha = any_finite();
+        assert_law(laws::pow_is_unit(q, alpha));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
+#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(not(kani), test)]
+fn pow_of_non_finite_input_is_nan() {
+    check("pow_of_non_finite_input_is_nan", || {
+        let q = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
+        let alpha: f32 = kani::any();
+        // Precondition: something is NaN or infinite.
+        kani::assume(!(q.is_finite() && alpha.is_finite()));
+        assert_law(laws::pow_of_non_finite_is_nan(q, alpha));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
+#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(not(kani), test)]
+fn slerp_of_non_finite_input_is_nan() {
+    check("slerp_of_non_finite_input_is_nan", || {
+        let a = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
+        let b = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
+        let alpha: f32 = kani::any();
+        // Precondition: something is NaN or infinite.
+        kani::assume(!(a.is_finite() && b.is_finite() && alpha.is_finite()));
+        assert_law(laws::slerp_of_non_finite_is_nan(a, b, alpha));
+    });
+}
+
+/// Identical, nearly identical, antipodal and opposite pairs are all among
+/// the inputs. Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
+#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(not(kani), test)]
+fn slerp_is_unit_for_every_finite_alpha() {
+    check("slerp_is_unit_for_every_finite_alpha", || {
+        // Preconditions: unit inputs, finite alpha. No solver bound.
+        let (a, b) = (any_unit_quat(), any_unit_quat());
+        let alpha = any_finite();
+        assert_law(laws::slerp_is_unit(a, b, alpha));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
+#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(not(kani), test)]
+fn slerp_is_exact_at_zero() {
+    check("slerp_is_exact_at_zero", || {
+        // Precondition: components within 2^60, so that b a^-1 is finite.
+        const LIMIT: f32 = 1.152_921_5e18;
+        let (a, b) = (any_quat_within(LIMIT), any_quat_within(LIMIT));
+        assert_law(laws::slerp_is_exact_at_zero(a, b));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(not(kani), test)]
+fn nlerp_is_unit() {
+    check("nlerp_is_unit", || {
+        // Preconditions: unit inputs, alpha in [0, 1].
+        let (a, b) = (any_unit_quat(), any_unit_quat());
+        let alpha = kani::any_where(|t: &f32| (0.0..=1.0).contains(t));
+        assert_law(laws::nlerp_is_unit(a, b, alpha));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // three entries, and normalize's four components
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(not(kani), test)]
+fn blend_of_three_is_unit_or_identity() {
+    check("blend_of_three_is_unit_or_identity", || {
+        // Preconditions: unit quaternions, finite weights within 2^60;
+        // solver bound: three entries, weights within 2^20.
+        let entries = [
+            (any_unit_quat(), any_within(MILLION)),
+            (any_unit_quat(), any_within(MILLION)),
+            (any_unit_quat(), any_within(MILLION)),
+        ];
+        assert_law(laws::blend_is_unit_or_identity(&entries));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(not(kani), test)]
+fn quat_inverse_is_an_involution() {
+    check("quat_inverse_is_an_involution", || {
+        // No assumption: every bit pattern, NaN payloads included.
+        let q = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
+        assert_law(laws::inverse_is_an_involution(q));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(not(kani), test)]
+fn quat_times_inverse_is_real() {
+    check("quat_times_inverse_is_real", || {
+        // Precondition: components within 2^60 (no overflow).
+        let q = any_quat_within(1.152_921_5e18);
+        assert_law(laws::product_with_inverse_is_real(q));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(not(kani), test)]
+fn cn_gives_non_negative_w_and_the_same_rotation() {
+    check("cn_gives_non_negative_w_and_the_same_rotation", || {
+        // No assumption: every bit pattern.
+        let q = Quat::new(kani::any(), kani::any(), kani::any(), kani::any());
+        assert_law(laws::cn_gives_non_negative_w_and_the_same_rotation(q));
+    });
+}
+
+/// A rigid body transform with a unit rotation and a translation within
+/// 2^20 (solver bound; the laws allow 2^40 or 2^20).
+fn any_rig_tform() -> RigTForm {
+    RigTForm::new(any_vec_within(MILLION), any_unit_quat())
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(not(kani), test)]
+fn rigtform_times_inverse_is_identity() {
+    check("rigtform_times_inverse_is_identity", || {
+        assert_law(laws::rigid_product_with_inverse_is_identity(any_rig_tform()));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(not(kani), test)]
+fn rigtform_inverse_is_an_involution() {
+    check("rigtform_inverse_is_an_involution", || {
+        assert_law(laws::rigid_inverse_is_an_involution(any_rig_tform()));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(17))] // the law compares 16 matrix entries
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(not(kani), test)]
+fn rigtform_inverse_agrees_with_matrix_inverse() {
+    check("rigtform_inverse_agrees_with_matrix_inverse", || {
+        assert_law(laws::rigid_inverse_matches_matrix_inverse(any_rig_tform()));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(not(kani), test)]
+fn rigtform_matrix_moves_points_as_the_transform() {
+    check("rigtform_matrix_moves_points_as_the_transform", || {
+        let a = any_rig_tform();
+        // Precondition: w is 0 (a vector) or 1 (a point).
+        let w = if kani::any::<bool>() { 1.0 } else { 0.0 };
+        let v = any_vec_within(MILLION);
+        let c = Cvec4::new(v.x, v.y, v.z, w);
+        assert_law(laws::rigid_matrix_moves_points_as_the_transform(a, c));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
+#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(not(kani), test)]
+fn rigtform_interpolate_is_exact_at_zero() {
+    check("rigtform_interpolate_is_exact_at_zero", || {
+        // Precondition: components within 2^60.
+        const LIMIT: f32 = 1.152_921_5e18;
+        let a = RigTForm::new(any_vec_within(LIMIT), any_quat_within(LIMIT));
+        let b = RigTForm::new(any_vec_within(LIMIT), any_quat_within(LIMIT));
+        assert_law(laws::interpolate_is_exact_at_zero(a, b));
+    });
+}
+
+/// Proof time with Kani: not run yet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(17))] // sixteen entries drawn, four columns checked
+#[cfg_attr(not(kani), test)]
+fn matrix_inverse_is_none_or_finite() {
+    check("matrix_inverse_is_none_or_finite", || {
+        // No assumption: every bit pattern of every entry.
+        let m: [f32; 16] = core::array::from_fn(|_| kani::any());
+        assert_law(laws::matrix_inverse_is_none_or_finite(
+            Matrix4::from_cols_array(&m),
+        ));
+    });
+}

@@ -1,0 +1,476 @@
+//! The laws of the numerics contract, each written once.
+//!
+//! Every law is a function that takes inputs meeting its stated
+//! preconditions and returns a [`Verdict`]. The same function is called by
+//! the Kani harnesses (`src/harnesses.rs`), by the proptest properties
+//! (`tests/properties.rs` of the `rigtform` crate), by the fuzz targets
+//! (`fuzz/`) and by the on-target tests (`embedded/`), so that the four
+//! layers cannot drift apart.
+//!
+//! The checks are computed in `f64`: squares and sums of `f32` values are
+//! then (nearly) exact, so a law measures the error of the `f32` code under
+//! test, not of its own arithmetic.
+//!
+//! The tolerances are worst-case bounds, looser than the measured maxima of
+//! `rigtform::accuracy` (which come from random draws): a law must hold for
+//! every input a model checker may choose, and a real bug (a sign, a swapped
+//! component, a missing negation) breaks it by orders of magnitude.
+
+use rigtform::accuracy::{INVERSE_MAX_REL_ERROR, ROTATE_MAX_REL_ERROR, UNIT_NORM_ERROR};
+use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+
+/// A law that did not hold: its name, the measured quantity and its bound
+/// (both `NaN`-free unless the result itself was `NaN`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Violation {
+    /// The law's function name.
+    pub law: &'static str,
+    /// What was measured (an error, or 1.0 for a failed yes-or-no check).
+    pub measured: f64,
+    /// The bound it had to stay within (0.0 for a yes-or-no check).
+    pub bound: f64,
+}
+
+/// The outcome of checking a law on one input.
+pub type Verdict = Result<(), Violation>;
+
+/// `|norm^2 - 1|` allowed after one rounded operation on unit inputs
+/// (a product, `normalize`, `pow`, `nlerp`): four times the measured
+/// [`UNIT_NORM_ERROR`] (which is about `|norm - 1|`, so half of
+/// `|norm^2 - 1|`).
+///
+/// Worst case, default backend: a product's norm is off by at most
+/// `2 gamma_4 = 8u` (u = 2^-24; each component is a sum of four rounded
+/// products, and the vector of their absolute sums has norm at most
+/// `2 |a| |b|`), so `|norm^2 - 1| <= 16u = 9.5e-7`; `pow` adds sine and
+/// cosine errors (`3 SIN_COS_MAX_ABS_ERROR`) to the normalized axis (`8u`):
+/// 6.6e-7. Both are below 4 x 3.2e-7 = 1.28e-6. With `fast-math` the bound
+/// follows its `UNIT_NORM_ERROR` (5e-3).
+pub const ONE_STEP_NORM_TOL: f64 = 4.0 * UNIT_NORM_ERROR as f64;
+
+/// `|norm^2 - 1|` allowed after two rounded operations (`slerp` is a `pow`
+/// and a product): twice [`ONE_STEP_NORM_TOL`].
+pub const TWO_STEP_NORM_TOL: f64 = 2.0 * ONE_STEP_NORM_TOL;
+
+/// Relative error allowed in a translation that went through a rotation
+/// and back (`a * a.inv()`, `a.inv().inv()`): two rotations, each within
+/// [`ROTATE_MAX_REL_ERROR`] (measured), times four for the worst case, plus
+/// what a rotation quaternion off unit by [`ONE_STEP_NORM_TOL`] does to
+/// lengths (`2 |norm^2 - 1|` per rotation; with `fast-math`, whose
+/// rotations are unit only to about 1e-3, this term dominates).
+pub const TRANSLATION_REL_TOL: f64 = 4.0 * ONE_STEP_NORM_TOL + 8.0 * ROTATE_MAX_REL_ERROR as f64;
+
+/// Absolute slack for results that should be zero or equal, in units of the
+/// inputs' magnitude: below this, products of tiny components underflow.
+const UNDERFLOW_SLACK: f64 = 1e-36;
+
+fn norm2(q: Quat) -> f64 {
+    let [w, x, y, z] = [q.w, q.x, q.y, q.z].map(f64::from);
+    w * w + x * x + y * y + z * z
+}
+
+/// Squared length, in f64. The laws compare squares rather than take
+/// square roots: libm's `sqrt` is inline assembly on x86, which Kani
+/// cannot read.
+fn vnorm2(v: Cvec3) -> f64 {
+    let [x, y, z] = [v.x, v.y, v.z].map(f64::from);
+    x * x + y * y + z * z
+}
+
+/// The 1-norm, in f64: an upper bound of the length without a square root.
+fn vnorm1(v: Cvec3) -> f64 {
+    f64::from(v.x).abs() + f64::from(v.y).abs() + f64::from(v.z).abs()
+}
+
+fn within(law: &'static str, measured: f64, bound: f64) -> Verdict {
+    // Written so that a NaN measurement fails.
+    if measured <= bound {
+        Ok(())
+    } else {
+        Err(Violation {
+            law,
+            measured,
+            bound,
+        })
+    }
+}
+
+fn holds(law: &'static str, condition: bool) -> Verdict {
+    within(law, if condition { 0.0 } else { 1.0 }, 0.0)
+}
+
+fn is_nan_quat(q: Quat) -> bool {
+    q.w.is_nan() && q.x.is_nan() && q.y.is_nan() && q.z.is_nan()
+}
+
+fn same_bits(a: Quat, b: Quat) -> bool {
+    [a.w, a.x, a.y, a.z].map(f32::to_bits) == [b.w, b.x, b.y, b.z].map(f32::to_bits)
+}
+
+/// `|a b| = |a| |b|`: the Hamilton product multiplies norms, so it keeps
+/// unit quaternions unit.
+///
+/// Preconditions: `a` and `b` finite, with `|a|^2` and `|b|^2` in
+/// `[2^-40, 2^80]` (no overflow; underflow then costs nothing relative).
+pub fn product_norm_is_multiplicative(a: Quat, b: Quat) -> Verdict {
+    let want = norm2(a) * norm2(b);
+    let got = norm2(a * b);
+    within(
+        "product_norm_is_multiplicative",
+        (got - want).abs(),
+        ONE_STEP_NORM_TOL * want,
+    )
+}
+
+/// `|q v| = |v|` for a unit `q`: rotations keep lengths (compared as
+/// squares: `|q v|^2` within `2b + b^2` of `|v|^2` for a length bound `b`).
+///
+/// Preconditions: `q` unit to [`ONE_STEP_NORM_TOL`] (as `normalize` gives),
+/// `v` finite with `|v| <= 2^40`.
+pub fn rotation_preserves_length(q: Quat, v: Cvec3) -> Verdict {
+    let len2 = vnorm2(v);
+    // A q off unit by d scales part of v by 1 + d: up to 2 d |v| in all.
+    let b = 2.0 * ONE_STEP_NORM_TOL + 4.0 * ROTATE_MAX_REL_ERROR as f64;
+    within(
+        "rotation_preserves_length",
+        (vnorm2(q * v) - len2).abs(),
+        (2.0 * b + b * b) * len2 + UNDERFLOW_SLACK,
+    )
+}
+
+/// `normalize` gives a unit quaternion for every finite non-zero input,
+/// from subnormal to `f32::MAX` components.
+///
+/// Preconditions: `q` finite and not zero.
+pub fn normalize_is_unit(q: Quat) -> Verdict {
+    within(
+        "normalize_is_unit",
+        (norm2(q.normalize()) - 1.0).abs(),
+        ONE_STEP_NORM_TOL,
+    )
+}
+
+/// `pow` gives a finite unit quaternion for every finite input and every
+/// finite exponent (the contract's item 3): zero, subnormal or huge vector
+/// parts, `w = +-1`, `w = 0`, non-unit inputs, any `alpha`.
+///
+/// Preconditions: `q` and `alpha` finite.
+pub fn pow_is_unit(q: Quat, alpha: f32) -> Verdict {
+    let r = q.pow(alpha);
+    holds("pow_is_unit (finite)", r.is_finite())?;
+    within("pow_is_unit", (norm2(r) - 1.0).abs(), ONE_STEP_NORM_TOL)
+}
+
+/// NaN or infinity in, NaN out: `pow` of a non-finite quaternion or with a
+/// non-finite exponent is [`Quat::NAN`].
+///
+/// Preconditions: `q` or `alpha` not finite.
+pub fn pow_of_non_finite_is_nan(q: Quat, alpha: f32) -> Verdict {
+    holds("pow_of_non_finite_is_nan", is_nan_quat(q.pow(alpha)))
+}
+
+/// `slerp` of unit quaternions gives a finite unit quaternion for every
+/// finite `alpha`: identical, nearly identical, antipodal and opposite
+/// inputs included.
+///
+/// Preconditions: `a` and `b` unit to [`ONE_STEP_NORM_TOL`], `alpha` finite.
+pub fn slerp_is_unit(a: Quat, b: Quat, alpha: f32) -> Verdict {
+    let r = a.slerp(b, alpha);
+    holds("slerp_is_unit (finite)", r.is_finite())?;
+    within("slerp_is_unit", (norm2(r) - 1.0).abs(), TWO_STEP_NORM_TOL)
+}
+
+/// NaN or infinity in, NaN out: `slerp` with a non-finite input or
+/// exponent is [`Quat::NAN`] (the NaN of `pow` spreads through the product).
+///
+/// Preconditions: `a`, `b` or `alpha` not finite.
+pub fn slerp_of_non_finite_is_nan(a: Quat, b: Quat, alpha: f32) -> Verdict {
+    holds("slerp_of_non_finite_is_nan", is_nan_quat(a.slerp(b, alpha)))
+}
+
+/// `slerp(a, b, 0) == a`, exactly (up to the sign of zero components).
+///
+/// Preconditions: `a` and `b` finite, components at most 2^60 in magnitude
+/// (so that `b a^-1` is finite).
+pub fn slerp_is_exact_at_zero(a: Quat, b: Quat) -> Verdict {
+    holds("slerp_is_exact_at_zero", a.slerp(b, 0.0) == a)
+}
+
+/// Slerp takes the short way at constant angular velocity: for `alpha` in
+/// `[0, 1]`, the rotation from `a` to `slerp(a, b, alpha)` is `alpha` times
+/// the rotation from `a` to `b` (at most pi), to within the documented
+/// slerp error, doubled for the error of measuring the angles themselves.
+///
+/// Preconditions: `a` and `b` unit to [`ONE_STEP_NORM_TOL`], `alpha` in `[0, 1]`.
+pub fn slerp_turns_by_alpha_times_the_angle(a: Quat, b: Quat, alpha: f32) -> Verdict {
+    let theta = a.angle_to(b);
+    let turned = a.angle_to(a.slerp(b, alpha));
+    let tol =
+        2.0 * f64::from(rigtform::accuracy::SLERP_MAX_ANGLE_ERROR) * f64::from(theta).max(1.0);
+    within(
+        "slerp_turns_by_alpha_times_the_angle",
+        (f64::from(turned) - f64::from(alpha) * f64::from(theta)).abs(),
+        tol,
+    )
+}
+
+/// `slerp(a, b, 1)` is the rotation of `b` (possibly as `-b`), to within
+/// the documented slerp error, doubled for the error of measuring the angle.
+///
+/// Preconditions: `a` and `b` unit to [`ONE_STEP_NORM_TOL`].
+pub fn slerp_reaches_the_rotation_of_b_at_one(a: Quat, b: Quat) -> Verdict {
+    let theta = f64::from(a.angle_to(b));
+    within(
+        "slerp_reaches_the_rotation_of_b_at_one",
+        f64::from(a.slerp(b, 1.0).angle_to(b)),
+        2.0 * f64::from(rigtform::accuracy::SLERP_MAX_ANGLE_ERROR) * theta.max(1.0),
+    )
+}
+
+/// `nlerp` of unit quaternions is unit, for `alpha` in `[0, 1]` (it blends
+/// on one hemisphere, so the sum never comes near zero).
+///
+/// Preconditions: `a` and `b` unit to [`ONE_STEP_NORM_TOL`], `alpha` in `[0, 1]`.
+pub fn nlerp_is_unit(a: Quat, b: Quat, alpha: f32) -> Verdict {
+    within(
+        "nlerp_is_unit",
+        (norm2(a.nlerp(b, alpha)) - 1.0).abs(),
+        ONE_STEP_NORM_TOL,
+    )
+}
+
+/// `blend` of finite entries is unit, or [`Quat::IDENTITY`] when the
+/// weights cancel (the documented result for "no rotation information").
+///
+/// Preconditions: every quaternion unit to [`ONE_STEP_NORM_TOL`], every
+/// weight finite with magnitude at most 2^60.
+pub fn blend_is_unit_or_identity(entries: &[(Quat, f32)]) -> Verdict {
+    let r = Quat::blend(entries);
+    if r == Quat::IDENTITY {
+        return Ok(());
+    }
+    within(
+        "blend_is_unit_or_identity",
+        (norm2(r) - 1.0).abs(),
+        ONE_STEP_NORM_TOL,
+    )
+}
+
+/// `q.inv().inv() == q`, bit for bit, for every input (NaN payloads and
+/// signed zeros included).
+///
+/// Preconditions: none.
+pub fn inverse_is_an_involution(q: Quat) -> Verdict {
+    holds("inverse_is_an_involution", same_bits(q.inv().inv(), q))
+}
+
+/// `q q^-1 = (|q|^2, 0)`: the real part is the rounded sum of squares and
+/// the vector part cancels to rounding (its terms meet their own negations,
+/// though not always in an order that makes the cancellation exact), so a
+/// unit `q` gives the identity.
+///
+/// Preconditions: `q` finite, components at most 2^60 in magnitude.
+pub fn product_with_inverse_is_real(q: Quat) -> Verdict {
+    let r = q * q.inv();
+    let n2 = norm2(q);
+    let tol = ONE_STEP_NORM_TOL * n2 + UNDERFLOW_SLACK;
+    within(
+        "product_with_inverse_is_real (vector part, squared)",
+        vnorm2(r.vector()),
+        tol * tol,
+    )?;
+    within(
+        "product_with_inverse_is_real",
+        (f64::from(r.w) - n2).abs(),
+        tol,
+    )
+}
+
+/// `cn(q)` has `w >= 0` and is `q` or `-q`, bit for bit: the same rotation,
+/// on the near hemisphere (a NaN `w` is left alone).
+///
+/// Preconditions: none.
+pub fn cn_gives_non_negative_w_and_the_same_rotation(q: Quat) -> Verdict {
+    let r = q.cn();
+    holds(
+        "cn_gives_non_negative_w_and_the_same_rotation",
+        (r.w >= 0.0 || r.w.is_nan()) && (same_bits(r, q) || same_bits(r, -q)),
+    )
+}
+
+/// `a a^-1 = IDENTITY`: the rotation part as
+/// [`product_with_inverse_is_real`] says, and the translation back to zero
+/// within [`TRANSLATION_REL_TOL`] `|t|`.
+///
+/// Preconditions: `a.r` unit to [`ONE_STEP_NORM_TOL`], `a.t` finite with
+/// `|a.t| <= 2^40`.
+pub fn rigid_product_with_inverse_is_identity(a: RigTForm) -> Verdict {
+    let p = a * a.inv();
+    product_with_inverse_is_real(a.r)?;
+    within(
+        "rigid_product_with_inverse_is_identity (rotation, squared)",
+        norm2(Quat::new(p.r.w - 1.0, p.r.x, p.r.y, p.r.z)),
+        4.0 * ONE_STEP_NORM_TOL * ONE_STEP_NORM_TOL,
+    )?;
+    within(
+        "rigid_product_with_inverse_is_identity (squared)",
+        vnorm2(p.t),
+        TRANSLATION_REL_TOL * TRANSLATION_REL_TOL * vnorm2(a.t) + UNDERFLOW_SLACK,
+    )
+}
+
+/// `a.inv().inv() = a`: the rotation bit for bit, the translation within
+/// [`TRANSLATION_REL_TOL`] `|t|`.
+///
+/// Preconditions: `a.r` unit to [`ONE_STEP_NORM_TOL`], `a.t` finite with
+/// `|a.t| <= 2^40`.
+pub fn rigid_inverse_is_an_involution(a: RigTForm) -> Verdict {
+    let b = a.inv().inv();
+    holds(
+        "rigid_inverse_is_an_involution (rotation)",
+        same_bits(b.r, a.r),
+    )?;
+    within(
+        "rigid_inverse_is_an_involution (squared)",
+        vnorm2(b.t - a.t),
+        TRANSLATION_REL_TOL * TRANSLATION_REL_TOL * vnorm2(a.t) + UNDERFLOW_SLACK,
+    )
+}
+
+/// `RigTForm::inv` agrees with `Matrix4::inverse`: the matrix of `a.inv()`
+/// equals the inverse of the matrix of `a`, entry by entry, within
+/// `(8 INVERSE_MAX_REL_ERROR + 4 ONE_STEP_NORM_TOL) (1 + |t|_1)` (the cofactor inverse of a rigid
+/// matrix has a unit determinant and its translation column is three
+/// triple products with `t`).
+///
+/// Preconditions: `a.r` unit to [`ONE_STEP_NORM_TOL`], `a.t` finite with
+/// `|a.t| <= 2^20`.
+pub fn rigid_inverse_matches_matrix_inverse(a: RigTForm) -> Verdict {
+    let Some(m) = Matrix4::from(a).inverse() else {
+        return holds("rigid_inverse_matches_matrix_inverse (invertible)", false);
+    };
+    let want = Matrix4::from(a.inv()).to_cols_array();
+    let worst = m
+        .to_cols_array()
+        .iter()
+        .zip(want)
+        .map(|(&x, y)| (f64::from(x) - f64::from(y)).abs())
+        .fold(0.0, f64::max);
+    // Plus what a rotation off unit does: its matrix is then no longer
+    // orthogonal, and the conjugate no longer its exact inverse.
+    let tol =
+        (8.0 * f64::from(INVERSE_MAX_REL_ERROR) + 4.0 * ONE_STEP_NORM_TOL) * (1.0 + vnorm1(a.t));
+    within("rigid_inverse_matches_matrix_inverse", worst, tol)
+}
+
+/// The matrix of a rigid transform moves points and vectors as the
+/// transform does: `Matrix4::from(a) * c` equals `a * c` within the
+/// rotation error, relative to `|t|_1 + |c|_1`.
+///
+/// Preconditions: `a.r` unit to [`ONE_STEP_NORM_TOL`]; `a.t` and `c` finite,
+/// magnitudes at most 2^40; `c.w` 0 or 1.
+pub fn rigid_matrix_moves_points_as_the_transform(a: RigTForm, c: Cvec4) -> Verdict {
+    let by_matrix = Matrix4::from(a) * c;
+    let by_rbt = a * c;
+    let d = by_matrix - by_rbt;
+    let scale = vnorm1(a.t) + vnorm1(c.xyz());
+    // The matrix entries carry MATRIX_ENTRY_ERROR; both paths round.
+    let tol = 8.0 * f64::from(rigtform::accuracy::MATRIX_ENTRY_ERROR) * scale;
+    let worst = [d.x, d.y, d.z, d.w]
+        .iter()
+        .map(|&e| f64::from(e).abs())
+        .fold(0.0, f64::max);
+    within(
+        "rigid_matrix_moves_points_as_the_transform",
+        worst,
+        tol + UNDERFLOW_SLACK,
+    )
+}
+
+/// `interpolate(a, b, 0) == a`, exactly: `lerp` and `slerp` are both exact
+/// at `alpha = 0`.
+///
+/// Preconditions: `a` and `b` finite, components at most 2^60.
+pub fn interpolate_is_exact_at_zero(a: RigTForm, b: RigTForm) -> Verdict {
+    holds("interpolate_is_exact_at_zero", a.interpolate(b, 0.0) == a)
+}
+
+/// `Matrix4::inverse` and `normal_matrix` give `None` or finite entries,
+/// for any input bits, never a panic; a normal matrix has no translation.
+///
+/// Preconditions: none.
+pub fn matrix_inverse_is_none_or_finite(m: Matrix4) -> Verdict {
+    let inverse_ok = m.inverse().is_none_or(Matrix4::is_finite);
+    let normal_ok = m
+        .normal_matrix()
+        .is_none_or(|n| n.is_finite() && n.cols[3] == Cvec4::new(0.0, 0.0, 0.0, 1.0));
+    holds("matrix_inverse_is_none_or_finite", inverse_ok && normal_ok)
+}
+
+#[cfg(test)]
+mod tests {
+    //! Each law must be able to fail: a deliberately wrong input breaks it.
+    use super::*;
+
+    #[test]
+    fn laws_hold_on_plain_inputs() {
+        let a = Quat::from_rotation_x(0.7);
+        let b = Quat::from_axis_angle(Cvec3::new(1.0, 2.0, 3.0), 2.5);
+        let f = RigTForm::new(Cvec3::new(3.0, -4.0, 12.0), b);
+        let v = Cvec3::new(1.0, -2.0, 0.5);
+        assert_eq!(product_norm_is_multiplicative(a, b), Ok(()));
+        assert_eq!(rotation_preserves_length(b, v), Ok(()));
+        assert_eq!(normalize_is_unit(Quat::new(1e-40, 3e-41, 0.0, 0.0)), Ok(()));
+        assert_eq!(pow_is_unit(Quat::new(-1.0, 0.0, 0.0, 0.0), 0.3), Ok(()));
+        assert_eq!(pow_of_non_finite_is_nan(a, f32::NAN), Ok(()));
+        assert_eq!(slerp_of_non_finite_is_nan(a, Quat::NAN, 0.5), Ok(()));
+        assert_eq!(slerp_of_non_finite_is_nan(a, b, f32::INFINITY), Ok(()));
+        assert_eq!(slerp_is_unit(a, -a, 0.5), Ok(()));
+        assert_eq!(slerp_is_exact_at_zero(a, b), Ok(()));
+        assert_eq!(slerp_turns_by_alpha_times_the_angle(a, b, 0.25), Ok(()));
+        assert_eq!(slerp_reaches_the_rotation_of_b_at_one(a, -b), Ok(()));
+        assert_eq!(nlerp_is_unit(a, -b, 0.5), Ok(()));
+        assert_eq!(blend_is_unit_or_identity(&[(a, 1.0), (b, 2.0)]), Ok(()));
+        assert_eq!(blend_is_unit_or_identity(&[(a, 1.0), (a, -1.0)]), Ok(()));
+        assert_eq!(inverse_is_an_involution(Quat::NAN), Ok(()));
+        assert_eq!(product_with_inverse_is_real(b), Ok(()));
+        assert_eq!(cn_gives_non_negative_w_and_the_same_rotation(-a), Ok(()));
+        assert_eq!(rigid_product_with_inverse_is_identity(f), Ok(()));
+        assert_eq!(rigid_inverse_is_an_involution(f), Ok(()));
+        assert_eq!(rigid_inverse_matches_matrix_inverse(f), Ok(()));
+        assert_eq!(
+            rigid_matrix_moves_points_as_the_transform(f, Cvec4::from_point(v)),
+            Ok(())
+        );
+        assert_eq!(interpolate_is_exact_at_zero(f, RigTForm::IDENTITY), Ok(()));
+        assert_eq!(matrix_inverse_is_none_or_finite(Matrix4::IDENTITY), Ok(()));
+    }
+
+    #[test]
+    fn laws_fail_on_inputs_that_break_them() {
+        // Inputs outside the preconditions, where the law is false.
+        let a = Quat::from_rotation_x(0.7);
+        let scaled = Quat::new(2.0, 0.0, 0.0, 0.0);
+        assert!(rotation_preserves_length(Quat::new(0.0, 2.0, 0.0, 0.0), Cvec3::Y).is_err());
+        assert!(normalize_is_unit(Quat::new(0.0, 0.0, 0.0, 0.0)).is_err());
+        assert!(pow_is_unit(Quat::NAN, 0.5).is_err());
+        assert!(pow_of_non_finite_is_nan(a, 0.5).is_err());
+        assert!(slerp_of_non_finite_is_nan(a, a, 0.5).is_err());
+        assert!(slerp_is_unit(scaled, a, 0.5).is_err());
+        assert!(slerp_turns_by_alpha_times_the_angle(a, -a.inv(), 3.0).is_err());
+        assert!(slerp_reaches_the_rotation_of_b_at_one(a, Quat::NAN).is_err());
+        assert!(nlerp_is_unit(Quat::NAN, a, 0.5).is_err());
+        assert!(blend_is_unit_or_identity(&[(scaled, 1.0)]).is_ok()); // normalized
+        assert!(blend_is_unit_or_identity(&[(a, f32::NAN)]).is_err());
+        assert!(product_with_inverse_is_real(Quat::new(1e30, 1e30, 0.0, 0.0)).is_err());
+        let off = RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::new(0.0, 2.0, 0.0, 0.0));
+        assert!(rigid_product_with_inverse_is_identity(off).is_err());
+        assert!(rigid_inverse_is_an_involution(off).is_err());
+        assert!(rigid_inverse_matches_matrix_inverse(off).is_err());
+        let singular = Matrix4::from_scale(Cvec3::new(1.0, 0.0, 1.0));
+        assert_eq!(matrix_inverse_is_none_or_finite(singular), Ok(()));
+        let err = product_norm_is_multiplicative(a, Quat::NAN).unwrap_err();
+        assert_eq!(err.law, "product_norm_is_multiplicative");
+        assert!(err.measured.is_nan());
+    }
+}

@@ -1,0 +1,142 @@
+//! The notes' formulas in `f64`, without `std`: the reference the on-target
+//! tests measure `rigtform`'s `f32` results against (the host tests use
+//! nalgebra for the same purpose).
+
+use rigtform::Quat;
+
+/// A quaternion in `f64`, scalar first.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Quat64 {
+    /// Real part.
+    pub w: f64,
+    /// `i` part.
+    pub x: f64,
+    /// `j` part.
+    pub y: f64,
+    /// `k` part.
+    pub z: f64,
+}
+
+impl From<Quat> for Quat64 {
+    fn from(q: Quat) -> Self {
+        Self {
+            w: q.w.into(),
+            x: q.x.into(),
+            y: q.y.into(),
+            z: q.z.into(),
+        }
+    }
+}
+
+/// The Hamilton product.
+impl core::ops::Mul for Quat64 {
+    type Output = Self;
+
+    fn mul(self, o: Self) -> Self {
+        Self {
+            w: self.w * o.w - self.x * o.x - self.y * o.y - self.z * o.z,
+            x: self.w * o.x + self.x * o.w + self.y * o.z - self.z * o.y,
+            y: self.w * o.y - self.x * o.z + self.y * o.w + self.z * o.x,
+            z: self.w * o.z + self.x * o.y - self.y * o.x + self.z * o.w,
+        }
+    }
+}
+
+impl Quat64 {
+    /// The conjugate (the inverse of a unit quaternion).
+    pub fn conj(self) -> Self {
+        Self {
+            w: self.w,
+            x: -self.x,
+            y: -self.y,
+            z: -self.z,
+        }
+    }
+
+    fn vector_norm(self) -> f64 {
+        libm::sqrt(self.x * self.x + self.y * self.y + self.z * self.z)
+    }
+
+    /// The notes' power operator: `phi = atan2(|v|, w)`, then
+    /// `(cos(alpha phi), sin(alpha phi) v / |v|)`; a pure real `w < 0`
+    /// turns about x, as `rigtform` documents.
+    pub fn pow(self, alpha: f64) -> Self {
+        let beta = self.vector_norm();
+        let (k, phi) = if beta == 0.0 {
+            let phi = if self.w < 0.0 {
+                core::f64::consts::PI
+            } else {
+                0.0
+            };
+            ([1.0, 0.0, 0.0], phi)
+        } else {
+            (
+                [self.x / beta, self.y / beta, self.z / beta],
+                libm::atan2(beta, self.w),
+            )
+        };
+        let (s, c) = (libm::sin(alpha * phi), libm::cos(alpha * phi));
+        Self {
+            w: c,
+            x: s * k[0],
+            y: s * k[1],
+            z: s * k[2],
+        }
+    }
+
+    /// `pow(cn(b a^-1), alpha) a`.
+    pub fn slerp(a: Self, b: Self, alpha: f64) -> Self {
+        let mut d = b * a.conj();
+        if d.w < 0.0 {
+            d = Self {
+                w: -d.w,
+                x: -d.x,
+                y: -d.y,
+                z: -d.z,
+            };
+        }
+        d.pow(alpha) * a
+    }
+
+    /// The angle of the rotation between two unit quaternions, up to sign:
+    /// `2 atan2(|v|, |w|)` of `b^-1 a` (accurate near 0 and near pi).
+    pub fn angle_between(a: Self, b: Self) -> f64 {
+        let d = b.conj() * a;
+        2.0 * libm::atan2(d.vector_norm(), libm::fabs(d.w))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pow_of_a_half_turn_is_a_quarter_turn() {
+        let q = Quat64::from(Quat::new(0.0, 0.0, 0.0, 1.0)); // pi about z
+        let h = q.pow(0.5);
+        let quarter = core::f64::consts::FRAC_PI_4;
+        assert!((h.w - quarter.cos()).abs() < 1e-15 && (h.z - quarter.sin()).abs() < 1e-15);
+    }
+
+    #[test]
+    fn slerp_takes_the_short_way_and_angles_ignore_sign() {
+        let a = Quat64::from(Quat::IDENTITY);
+        let half_turn_x = |angle: f64| Quat64 {
+            w: libm::cos(angle / 2.0),
+            x: libm::sin(angle / 2.0),
+            y: 0.0,
+            z: 0.0,
+        };
+        let b = half_turn_x(0.5);
+        let minus_b = Quat64 {
+            w: -b.w,
+            x: -b.x,
+            y: -b.y,
+            z: -b.z,
+        }; // w < 0: same rotation
+        let mid = Quat64::slerp(a, minus_b, 0.5);
+        assert!((Quat64::angle_between(mid, a) - 0.25).abs() < 1e-12);
+        assert!(Quat64::angle_between(mid, half_turn_x(0.25)) < 1e-12);
+        assert!(Quat64::angle_between(minus_b, b) < 1e-12);
+    }
+}
