@@ -195,7 +195,11 @@ fn quat_ops(c: &mut Criterion) {
             .map(|(&(a, b), &t)| (a, b, t))
             .collect();
         let mats: Vec<_> = tfs.iter().map(|&a| Matrix4::from(a)).collect();
-        let name = "rigtform";
+        let name = if cfg!(feature = "fast-math") {
+            "rigtform (fast-math)"
+        } else {
+            "rigtform"
+        };
 
         run(&mut group(c, "q*q"), name, &qq, |(a, b)| a * b);
         run(&mut group(c, "q*q renormalized"), name, &qq, |(a, b)| {

@@ -95,19 +95,26 @@ impl Tally {
         }
     }
 
-    /// `| max | p99 | NaN | panics |` cells.
-    fn cells(&mut self) -> String {
+    /// One table cell: `max / p99`, and the NaN and panic counts if any.
+    fn cell(&mut self) -> String {
         self.errors.sort_by(f64::total_cmp);
         let n = self.errors.len();
-        let (max, p99) = if n == 0 {
-            ("-".to_string(), "-".to_string())
+        let mut cell = if n == 0 {
+            "-".to_string()
         } else {
-            (
-                format!("{:.2e}", self.errors[n - 1]),
-                format!("{:.2e}", self.errors[(n * 99 / 100).min(n - 1)]),
+            format!(
+                "{:.2e} / {:.2e}",
+                self.errors[n - 1],
+                self.errors[(n * 99 / 100).min(n - 1)]
             )
         };
-        format!("{max} | {p99} | {} | {}", self.nans, self.panics)
+        if self.nans > 0 {
+            cell += &format!(", {} NaN", self.nans);
+        }
+        if self.panics > 0 {
+            cell += &format!(", {} panics", self.panics);
+        }
+        cell
     }
 }
 
@@ -179,9 +186,12 @@ fn draw(class: Class, d: &mut Draws) -> ([f32; 4], [f32; 4], f32) {
 
 fn slerp_table(draws: usize, rigtform_only: bool) {
     let libraries = slerps(rigtform_only);
-    println!("### slerp: angle error (rad) against the notes' formula in f64\n");
-    println!("| class | library | max | p99 | NaN | panics |");
-    println!("| --- | --- | --- | --- | --- | --- |");
+    println!(
+        "slerp, angle error in rad (max / 99th percentile) against the notes' formula in f64:\n"
+    );
+    let names: Vec<&str> = libraries.iter().map(|(n, _)| n.as_str()).collect();
+    println!("| class | {} |", names.join(" | "));
+    println!("| --- |{}", " --- |".repeat(names.len()));
     for (seed, (name, class)) in CLASSES.iter().enumerate() {
         let mut tallies: Vec<Tally> = libraries.iter().map(|_| Tally::default()).collect();
         let mut d = Draws::new(100 + seed as u64);
@@ -202,18 +212,17 @@ fn slerp_table(draws: usize, rigtform_only: bool) {
                 });
             }
         }
-        for ((library, _), tally) in libraries.iter().zip(&mut tallies) {
-            println!("| {name} | {library} | {} |", tally.cells());
-        }
+        let cells: Vec<String> = tallies.iter_mut().map(Tally::cell).collect();
+        println!("| {name} | {} |", cells.join(" | "));
     }
     println!();
 }
 
 /// `q * q`, rotate, normalize and pow on random unit inputs.
 fn other_ops_table(draws: usize, rigtform_only: bool) {
-    println!("### other operations, random unit inputs: max and p99 error\n");
-    println!("| operation | library | max | p99 | NaN | panics |");
-    println!("| --- | --- | --- | --- | --- | --- |");
+    println!("Other operations on random unit inputs (max / 99th percentile):\n");
+    println!("| operation | library | error |");
+    println!("| --- | --- | --- |");
     type Op = (&'static str, &'static str, fn(&mut Draws, &mut Tally));
     let mut ops: Vec<Op> = vec![
         ("q * q (rad)", "rigtform", |d, t| {
@@ -224,8 +233,8 @@ fn other_ops_table(draws: usize, rigtform_only: bool) {
             let want = to64(a.into_array()) * to64(b.into_array());
             t.see(Ok((a * b).into_array()), |q| angle_error(q, want));
         }),
-        ("pow, t in [-2, 3] (rad)", "rigtform", |d, t| {
-            let q = d.unit_quat().into_array();
+        ("pow of w >= 0, t in [-2, 3] (rad)", "rigtform", |d, t| {
+            let q = d.unit_quat().cn().into_array();
             let alpha = d.uniform(-2.0, 3.0);
             let want = pow64(to64(q), alpha);
             let r = catch_unwind(|| rig_quat(q).pow(alpha as f32).into_array());
@@ -272,16 +281,16 @@ fn other_ops_table(draws: usize, rigtform_only: bool) {
                 let q = mm_quat(a) * mm_quat(b);
                 t.see(Ok(q.to_array()), |q| angle_error(q, to64(a) * to64(b)));
             }),
-            ("pow, t in [-2, 3] (rad)", "nalgebra", |d, t| {
-                let q = d.unit_quat().into_array();
+            ("pow of w >= 0, t in [-2, 3] (rad)", "nalgebra", |d, t| {
+                let q = d.unit_quat().cn().into_array();
                 let alpha = d.uniform(-2.0, 3.0);
                 let want = pow64(to64(q), alpha);
                 let r = catch_unwind(|| {
                     let p = na_quat(q).powf(alpha as f32);
                     [p.w, p.i, p.j, p.k]
                 });
-                // nalgebra's powf turns the long way for w < 0 (it does not
-                // take cn either): compare on its own terms, as a rotation.
+                // For w < 0 the notes' pow turns the long way and nalgebra's
+                // the short way: both are powers, so only w >= 0 is compared.
                 t.see(r, |q| angle_error(q, want));
             }),
             (
@@ -351,7 +360,7 @@ fn other_ops_table(draws: usize, rigtform_only: bool) {
         } else {
             library.into()
         };
-        println!("| {op} | {library} | {} |", tally.cells());
+        println!("| {op} | {library} | {} |", tally.cell());
     }
     println!();
 }
@@ -411,7 +420,7 @@ fn drift_table(products: usize, rigtform_only: bool) {
             q.to_array()
         }));
     }
-    println!("### norm drift: \\|norm - 1\\| after {products} chained products\n");
+    println!("Norm drift, \\|norm - 1\\| after {products} chained products of small rotations:\n");
     println!("| library | \\|norm - 1\\| |");
     println!("| --- | --- |");
     for (name, chain) in chains {

@@ -4,6 +4,9 @@
 
 #![no_std]
 
+#[cfg(feature = "peers")]
+pub mod ops;
+
 use cortex_m_semihosting::{debug, hprintln};
 use rigtform_proofs::laws::Violation;
 
