@@ -232,8 +232,10 @@ const TWO_OVER_PI: [u32; 8] = [
 /// 64-bit fraction of a turn by it and keeping the top 64 bits gives
 /// radians in units of 2^-61.
 const TWO_PI_FIXED: u64 = 14_488_038_916_154_245_685;
-/// 2^-61, exact.
-const TWO_POW_M61: f32 = f32::from_bits((127 - 61) << 23);
+/// 2^-24 and 2^-48, exact: the weights of the two parts of the reduced
+/// argument (radians in units of 2^-61, shifted right by 37 and 13).
+const TWO_POW_M24: f32 = f32::from_bits((127 - 24) << 23);
+const TWO_POW_M48: f32 = f32::from_bits((127 - 48) << 23);
 
 /// The ulp bounds of the default kernels, as the doc comments state them and
 /// `kernels_are_within_their_ulp_bounds_on_a_sample` and
@@ -317,18 +319,21 @@ fn sum_and_tail(hi: f32, lo: f32) -> (f32, f32) {
 #[must_use]
 pub(crate) fn atan2_kernel(y: f32, x: f32) -> f32 {
     let (b, a) = (y.abs(), x.abs());
-    // Zeros, infinities, NaN and sums beyond f32::MAX take the cold path,
-    // so that the common one has no branch the data can mispredict.
-    if !(a + b < f32::INFINITY && a + b > 0.0) {
+    // Zeros, infinities and NaN take the cold path, so that the common one
+    // has no branch the data can mispredict.
+    if !(a < f32::INFINITY && b < f32::INFINITY && a + b > 0.0) {
         return atan2_of_extremes(y, x);
     }
     // The angle of (a, b) in [0, pi/2] as hi + atan(num / den) + lo: at
     // most 1/2 rad, at least pi/2 - 1/2, or between, where a and b are
-    // within a factor 2 of each other. Selected by bit masks, which compile
-    // to no branch.
+    // within a factor 2 of each other (and b + a can only overflow if b is
+    // huge, where a quarter of each is exact). Selected by bit masks, which
+    // compile to no branch.
     let (low, high) = (b <= a * TAN_HALF, a <= b * TAN_HALF);
-    let num = select(low, b, select(high, -a, b - a));
-    let den = select(low, a, select(high, b, b + a));
+    let quarter = select(b > 1e37, 0.25, 1.0);
+    let (qb, qa) = (b * quarter, a * quarter);
+    let num = select(low, b, select(high, -a, qb - qa));
+    let den = select(low, a, select(high, b, qb + qa));
     let hi = select(low, 0.0, select(high, PIO2_HI, PIO4_HI));
     let lo = select(low, 0.0, select(high, PIO2_LO, PIO4_LO));
     let phi = hi + (atan_poly(num / den) + lo);
@@ -348,9 +353,8 @@ fn select(c: bool, a: f32, b: f32) -> f32 {
     f32::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))
 }
 
-/// [`atan2_kernel`] where `|x| + |y|` is zero, infinite or NaN: IEEE 754's
-/// values for zeros and infinities, NaN for NaN, and finite arguments too
-/// large to add scaled down by 4 (exactly).
+/// [`atan2_kernel`] where both arguments are zero, either is infinite, or
+/// either is NaN: IEEE 754's values for zeros and infinities, NaN for NaN.
 #[cold]
 fn atan2_of_extremes(y: f32, x: f32) -> f32 {
     let (b, a) = (y.abs(), x.abs());
@@ -358,16 +362,13 @@ fn atan2_of_extremes(y: f32, x: f32) -> f32 {
         return f32::NAN;
     } else if b == 0.0 {
         0.0
-    } else if a == 0.0 {
-        PIO2_HI
     } else if a.is_infinite() && b.is_infinite() {
         PIO4_HI
     } else if a.is_infinite() {
         0.0
-    } else if b.is_infinite() {
-        PIO2_HI
     } else {
-        return atan2_kernel(y * 0.25, x * 0.25);
+        // b infinite, or a == 0.
+        PIO2_HI
     };
     let phi = if x.is_sign_negative() {
         PI_HI - phi
@@ -388,7 +389,6 @@ fn atan2_of_extremes(y: f32, x: f32) -> f32 {
 ///
 /// Within 1 ulp for `|x| <= 3 pi/4` ([`SIN_COS_NARROW_ULP`]) and 1.25 ulp
 /// beyond ([`SIN_COS_ULP`]); NaN for NaN and infinite `x`.
-#[inline]
 #[must_use]
 pub(crate) fn sin_cos_kernel(x: f32) -> (f32, f32) {
     let a = x.abs();
@@ -406,7 +406,6 @@ pub(crate) fn sin_cos_kernel(x: f32) -> (f32, f32) {
 /// `a` itself, or `pi/2 - a` with sine and cosine swapped, whose head's
 /// difference is exact (Sterbenz: `a` lies within a factor 2 of `PIO2_HI`)
 /// and whose tail is kept. Within [`SIN_COS_NARROW_ULP`].
-#[inline]
 fn sin_cos_quarter(a: f32) -> (f32, f32) {
     let swap = a > core::f32::consts::FRAC_PI_4;
     let (r, t) = if swap {
@@ -414,12 +413,18 @@ fn sin_cos_quarter(a: f32) -> (f32, f32) {
     } else {
         (a, 0.0)
     };
-    let (s, c) = (sin_poly(r, t), cos_poly(r, t));
+    let (s, c) = sin_cos_poly(r, t);
     if swap {
         (c, s)
     } else {
         (s, c)
     }
+}
+
+/// `(sin(r + t), cos(r + t))` for `|r| <= pi/4`: both polynomials, in one
+/// function that the narrow and the reduced paths share.
+fn sin_cos_poly(r: f32, t: f32) -> (f32, f32) {
+    (sin_poly(r, t), cos_poly(r, t))
 }
 
 /// Sines of three angles, each in [0, 3 pi/4]: the three that slerp
@@ -430,11 +435,13 @@ fn sin_cos_quarter(a: f32) -> (f32, f32) {
 #[inline]
 #[must_use]
 pub(crate) fn sin3(a: f32, b: f32, c: f32) -> (f32, f32, f32) {
-    (
-        sin_cos_quarter(a).0,
-        sin_cos_quarter(b).0,
-        sin_cos_quarter(c).0,
-    )
+    // A loop, not three copies: one body in flash where code size counts,
+    // unrolled and vectorized where speed does.
+    let mut x = [a, b, c];
+    for x in &mut x {
+        *x = sin_cos_quarter(*x).0;
+    }
+    (x[0], x[1], x[2])
 }
 
 /// [`sin_cos_kernel`] beyond 3 pi/4, by [`reduce_by_quarter_turns`]; NaN
@@ -446,7 +453,7 @@ fn sin_cos_reduced(x: f32) -> (f32, f32) {
         return (f32::NAN, f32::NAN);
     }
     let (quadrant, r, t) = reduce_by_quarter_turns(a);
-    let (s, c) = (sin_poly(r, t), cos_poly(r, t));
+    let (s, c) = sin_cos_poly(r, t);
     let (s, c) = match quadrant {
         0 => (s, c),
         1 => (c, -s),
@@ -490,9 +497,14 @@ fn reduce_by_quarter_turns(a: f32) -> (u32, f32, f32) {
     // |rest| < 2^61 turns / 2^64, times 2 pi 2^61 / 2^64: radians in units
     // of 2^-61, below pi/4 in magnitude.
     let radians = ((i128::from(rest) * i128::from(TWO_PI_FIXED)) >> 64) as i64;
-    let r = radians as f32;
-    let t = (radians - r as i64) as f32;
-    (quadrant as u32, r * TWO_POW_M61, t * TWO_POW_M61)
+    // To f32 through two 24-bit integers, each converted exactly (one
+    // instruction each on a Cortex-M4F, where i64 to f32 is a library
+    // call): bits 37 to 60 (with the sign) and 13 to 36; the 13 bits below
+    // are worth less than 2^-48 rad.
+    let high = (radians >> 37) as i32 as f32 * TWO_POW_M24;
+    let low = ((radians >> 13) & 0x00ff_ffff) as i32 as f32 * TWO_POW_M48;
+    let (r, t) = sum_and_tail(high, low);
+    (quadrant as u32, r, t)
 }
 
 /// 2^-100: below this, a sum of squares may have lost precision to underflow.

@@ -465,7 +465,9 @@ impl Quat {
     ///
     /// `self` and `other` are unit quaternions, or nearly so (the result has
     /// the norm of `self`, up to rounding). NaN or infinite inputs give
-    /// [`Quat::NAN`]. Every finite `alpha` works (see [`pow`](Self::pow)).
+    /// [`Quat::NAN`]. Every finite `alpha` works; beyond `f32::MAX / 4`, where
+    /// an ulp of `alpha phi` is many turns, it is taken as `f32::MAX / 4`
+    /// (still a unit rotation about the same axis).
     ///
     /// # Accuracy
     ///
@@ -490,7 +492,12 @@ impl Quat {
     /// ```
     #[must_use]
     pub fn slerp(self, other: Self, alpha: f32) -> Self {
-        if !(self.is_finite() && other.is_finite() && alpha.is_finite()) {
+        // Zero times the sum of all inputs is NaN exactly when one of them
+        // is NaN or infinite, or when they are so huge that the sum
+        // overflows (where the squared norms below would overflow anyway):
+        // one test instead of nine, for flash.
+        let sum = self.w + self.x + self.y + self.z + other.w + other.x + other.y + other.z;
+        if ((sum + alpha) * 0.0).is_nan() {
             return Self::NAN;
         }
         // The w of other * self.inv(); cn flips other when it is negative
@@ -514,17 +521,31 @@ impl Quat {
             // the identity, and so is its every power. And alpha = 0.
             return self;
         }
-        // The notes' formula itself further out, and with fast-math, whose
-        // sines are off by about 1e-3 absolute: divided by a small sin(phi),
-        // that would be far off in relative terms.
-        if cfg!(feature = "fast-math") || !(0.0..=1.0).contains(&alpha) {
-            return other.mul(self.inv()).pow(alpha) * self;
-        }
         // |u| = |self|^3 |other| sin(phi) and d = |self| dot = |self|^3
         // |other| cos(phi), both times u.scale: the notes' phi in [0, pi/2].
         let u_norm = float::sqrt(u.sum);
-        let d = float::sqrt(n2) * dot * u.scale;
-        let phi = float::atan2(u_norm, d);
+        let n = float::sqrt(n2);
+        let phi = float::atan2(u_norm, n * dot * u.scale);
+        // Extrapolating (where the two coefficients below would grow and
+        // their rounding show in the norm), and with fast-math (whose sines
+        // are off by about 1e-3 absolute, too much to divide by a small
+        // sin(phi)): the point at angle alpha phi on the circle through self
+        // in the direction of u, made orthogonal to self once more (its
+        // rounding leaves a component along self of an ulp over |u|, a lot
+        // when self and other are nearly the same), then normalized.
+        if cfg!(feature = "fast-math") || !(0.0..=1.0).contains(&alpha) {
+            let [w, x, y, z] = u.v;
+            let dir = Self::new(w, x, y, z);
+            let dir = dir.weighted_sum(1.0, self, -dir.dot(self) / n2);
+            let k = 1.0 / float::sqrt(dir.norm_squared());
+            let dir = Self::new(dir.w * k, dir.x * k, dir.y * k, dir.z * k);
+            // |alpha| <= f32::MAX / 4 and phi <= pi/2 keep alpha * phi
+            // finite. Beyond, an ulp of alpha phi is far more than a turn
+            // (any angle is as right as any other), so alpha is clamped.
+            let alpha = alpha.clamp(-f32::MAX / 4.0, f32::MAX / 4.0);
+            let (s, c) = float::sin_cos(alpha * phi);
+            return self.weighted_sum(c, dir, s * n);
+        }
         // alpha phi and (1 - alpha) phi add up to phi exactly where f32
         // allows (Sterbenz), so that the result stays on the arc.
         let far = alpha * phi;

@@ -327,6 +327,25 @@ fn slerp_of_identical_nearly_identical_antipodal_and_opposite_rotations() {
 }
 
 #[test]
+fn slerp_extrapolated_far_from_nearly_identical_inputs_is_unit() {
+    // The direction of travel of inputs 1e-6 rad apart is known only
+    // roughly; far out it must still give a unit result.
+    let mut draws = common::Draws::new(32);
+    for _ in 0..10_000 {
+        let a = draws.unit_quat();
+        let axis = draws.unit_vec64();
+        let axis = Cvec3::new(axis.x as f32, axis.y as f32, axis.z as f32);
+        for apart in [1e-6f32, 1e-4, 1e-2] {
+            let b = Quat::from_axis_angle(axis, apart) * a;
+            for alpha in [-3.0f32, 7.0, 1e6, -1e30, f32::MAX] {
+                let s = a.slerp(b, alpha);
+                assert!(is_unit(s, UNIT_NORM_ERROR), "{a:?} {b:?} {alpha}: {s:?}");
+            }
+        }
+    }
+}
+
+#[test]
 fn slerp_of_antipodal_inputs_stays_put() {
     let a = Quat::from_axis_angle(Cvec3::new(2.0, 1.0, -1.0), 0.8);
     for alpha in [0.3f32, 1.0, 2.0] {
