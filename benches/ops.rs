@@ -38,105 +38,114 @@ fn run<I: Copy, O>(group: &mut Group<'_>, library: &str, inputs: &[I], f: impl F
     });
 }
 
-/// The inputs zipped into pairs of some library's types.
-fn pairs<A, B>(
-    a: &[[f32; 4]],
-    b: &[[f32; 4]],
-    fa: impl Fn([f32; 4]) -> A,
-    fb: impl Fn([f32; 4]) -> B,
-) -> Vec<(A, B)> {
-    a.iter().zip(b).map(|(&x, &y)| (fa(x), fb(y))).collect()
-}
-
 fn group<'a>(c: &'a mut Criterion, name: &str) -> Group<'a> {
     let mut g = c.benchmark_group(name);
     g.throughput(Throughput::Elements(N as u64));
     g
 }
 
-/// The glam benchmarks, for both of its builds (same API, different crate).
-macro_rules! glam_benches {
-    ($c:ident, $inp:ident, $glam:ident, $name:literal, $quat:ident, $vec:ident) => {{
-        let q: Vec<_> = $inp.a.iter().map(|&q| $quat(q)).collect();
-        let qq = pairs(&$inp.a, &$inp.b, $quat, $quat);
-        let qv: Vec<_> = $inp
-            .a
-            .iter()
-            .zip(&$inp.v)
-            .map(|(&q, &v)| ($quat(q), $vec(v)))
-            .collect();
-        let qqa: Vec<_> = qq
-            .iter()
-            .zip(&$inp.alpha)
-            .map(|(&(a, b), &t)| (a, b, t))
-            .collect();
-        // A rigid body transform as glam users write it: a (translation, rotation) pair.
-        let tf = |t: [f32; 3], r: [f32; 4]| ($vec(t), $quat(r));
-        let tfs: Vec<_> = $inp
+/// The shared inputs in one library's types: quaternions `Q`, vectors `V`
+/// and rigid body transforms `T` (whatever the library has for them).
+struct Prepared<Q, V, T> {
+    q: Vec<Q>,
+    qq: Vec<(Q, Q)>,
+    qv: Vec<(Q, V)>,
+    qa: Vec<(Q, f32)>,
+    qqa: Vec<(Q, Q, f32)>,
+    tf: Vec<T>,
+    tf2: Vec<(T, T)>,
+    tfv: Vec<(T, V)>,
+    tfa: Vec<(T, T, f32)>,
+}
+
+impl<Q: Copy, V: Copy, T: Copy> Prepared<Q, V, T> {
+    fn new(
+        inp: &Inputs,
+        quat: impl Fn([f32; 4]) -> Q,
+        vec: impl Fn([f32; 3]) -> V,
+        tform: impl Fn([f32; 3], [f32; 4]) -> T,
+    ) -> Self {
+        let q: Vec<Q> = inp.a.iter().map(|&a| quat(a)).collect();
+        let b: Vec<Q> = inp.b.iter().map(|&b| quat(b)).collect();
+        let tf: Vec<T> = inp
             .v
             .iter()
-            .zip(&$inp.a)
-            .map(|(&t, &r)| tf(t, r))
+            .zip(&inp.a)
+            .map(|(&t, &r)| tform(t, r))
             .collect();
-        let tf2: Vec<_> = tfs
+        let tf_b: Vec<T> = inp
+            .u
             .iter()
-            .zip($inp.u.iter().zip(&$inp.b))
-            .map(|(&a, (&t, &r))| (a, tf(t, r)))
+            .zip(&inp.b)
+            .map(|(&t, &r)| tform(t, r))
             .collect();
-        let tfp: Vec<_> = tfs
-            .iter()
-            .zip(&$inp.u)
-            .map(|(&a, &p)| (a, $vec(p)))
-            .collect();
-        let tfa: Vec<_> = tf2
-            .iter()
-            .zip(&$inp.alpha)
-            .map(|(&(a, b), &t)| (a, b, t))
-            .collect();
+        let v: Vec<V> = inp.v.iter().map(|&v| vec(v)).collect();
+        let u: Vec<V> = inp.u.iter().map(|&u| vec(u)).collect();
+        let t = &inp.alpha;
+        Self {
+            qq: q.iter().zip(&b).map(|(&a, &b)| (a, b)).collect(),
+            qv: q.iter().zip(&v).map(|(&a, &v)| (a, v)).collect(),
+            qa: q.iter().zip(t).map(|(&a, &t)| (a, t)).collect(),
+            qqa: (0..N).map(|i| (q[i], b[i], t[i])).collect(),
+            tf2: tf.iter().zip(&tf_b).map(|(&a, &b)| (a, b)).collect(),
+            tfv: tf.iter().zip(&u).map(|(&a, &u)| (a, u)).collect(),
+            tfa: (0..N).map(|i| (tf[i], tf_b[i], t[i])).collect(),
+            q,
+            tf,
+        }
+    }
+}
 
-        run(&mut group($c, "q*q"), $name, &qq, |(a, b)| a * b);
-        run(&mut group($c, "rotate Cvec3"), $name, &qv, |(q, v)| q * v);
-        run(&mut group($c, "inv"), $name, &q, |q| q.inverse());
-        run(&mut group($c, "normalize"), $name, &q, |q| q.normalize());
-        run(&mut group($c, "slerp"), $name, &qqa, |(a, b, t)| {
+/// The glam benchmarks, for both of its builds (same API, different crate).
+/// A rigid body transform is what glam users write for one: a
+/// (translation, rotation) pair.
+macro_rules! glam_benches {
+    ($c:ident, $inp:ident, $glam:ident, $name:expr, $quat:ident, $vec:ident) => {{
+        let p = Prepared::new(&$inp, $quat, $vec, |t, r| ($vec(t), $quat(r)));
+        let mats: Vec<_> =
+            p.tf.iter()
+                .map(|&(t, r)| $glam::Mat4::from_rotation_translation(r, t))
+                .collect();
+        let name = $name;
+        run(&mut group($c, "q*q"), name, &p.qq, |(a, b)| a * b);
+        run(&mut group($c, "rotate Cvec3"), name, &p.qv, |(q, v)| q * v);
+        run(&mut group($c, "inv"), name, &p.q, |q| q.inverse());
+        run(&mut group($c, "normalize"), name, &p.q, |q| q.normalize());
+        run(&mut group($c, "slerp"), name, &p.qqa, |(a, b, t)| {
             a.slerp(b, t)
         });
-        run(&mut group($c, "nlerp"), $name, &qqa, |(a, b, t)| {
+        run(&mut group($c, "nlerp"), name, &p.qqa, |(a, b, t)| {
             a.lerp(b, t)
         });
         run(
             &mut group($c, "RigTForm * RigTForm"),
-            $name,
-            &tf2,
+            name,
+            &p.tf2,
             |((t1, r1), (t2, r2))| (t1 + r1 * t2, r1 * r2),
         );
-        run(&mut group($c, "RigTForm inv"), $name, &tfs, |(t, r)| {
+        run(&mut group($c, "RigTForm inv"), name, &p.tf, |(t, r)| {
             let ri = r.inverse();
             (-(ri * t), ri)
         });
         run(
             &mut group($c, "RigTForm * point"),
-            $name,
-            &tfp,
-            |((t, r), p)| r * p + t,
+            name,
+            &p.tfv,
+            |((t, r), v)| r * v + t,
         );
         run(
             &mut group($c, "RigTForm interpolate"),
-            $name,
-            &tfa,
+            name,
+            &p.tfa,
             |((t1, r1), (t2, r2), a)| (t1.lerp(t2, a), r1.slerp(r2, a)),
         );
         run(
             &mut group($c, "Matrix4 from RigTForm"),
-            $name,
-            &tfs,
+            name,
+            &p.tf,
             |(t, r)| $glam::Mat4::from_rotation_translation(r, t),
         );
-        let mats: Vec<_> = tfs
-            .iter()
-            .map(|&(t, r)| $glam::Mat4::from_rotation_translation(r, t))
-            .collect();
-        run(&mut group($c, "normal_matrix"), $name, &mats, |m| {
+        run(&mut group($c, "normal_matrix"), name, &mats, |m| {
             $glam::Mat3::from_mat4(m).inverse().transpose()
         });
     }};
@@ -145,75 +154,45 @@ macro_rules! glam_benches {
 fn quat_ops(c: &mut Criterion) {
     let inp = Inputs::new(N, 1);
 
-    // rigtform
+    // rigtform, under the name of its backend.
     {
-        let q: Vec<_> = inp.a.iter().map(|&q| rig_quat(q)).collect();
-        let qq = pairs(&inp.a, &inp.b, rig_quat, rig_quat);
-        let qv: Vec<_> = inp
-            .a
+        let p = Prepared::new(&inp, rig_quat, rig_vec, rig_tform);
+        let qc: Vec<_> =
+            p.qv.iter()
+                .map(|&(q, v)| (q, Cvec4::from_point(v)))
+                .collect();
+        let tfc: Vec<_> = p
+            .tfv
             .iter()
-            .zip(&inp.v)
-            .map(|(&q, &v)| (rig_quat(q), rig_vec(v)))
-            .collect();
-        let qc: Vec<_> = qv.iter().map(|&(q, v)| (q, Cvec4::from_point(v))).collect();
-        let qa: Vec<_> = q.iter().zip(&inp.alpha).map(|(&q, &t)| (q, t)).collect();
-        let qqa: Vec<_> = qq
-            .iter()
-            .zip(&inp.alpha)
-            .map(|(&(a, b), &t)| (a, b, t))
+            .map(|&(a, v)| (a, Cvec4::from_point(v)))
             .collect();
         let blend4: Vec<_> = (0..N)
             .map(|i| {
-                let t = inp.alpha[i];
-                [
-                    (q[i], 1.0 - t),
-                    (rig_quat(inp.b[i]), t),
-                    (q[(i + 1) % N], 0.5),
-                    (rig_quat(inp.b[(i + 1) % N]), 0.25),
-                ]
+                let (a, b, t) = p.qqa[i];
+                let (c, d, _) = p.qqa[(i + 1) % N];
+                [(a, 1.0 - t), (b, t), (c, 0.5), (d, 0.25)]
             })
             .collect();
-        let tfs: Vec<_> = inp
-            .v
-            .iter()
-            .zip(&inp.a)
-            .map(|(&t, &r)| rig_tform(t, r))
-            .collect();
-        let tf2: Vec<_> = tfs
-            .iter()
-            .zip(inp.u.iter().zip(&inp.b))
-            .map(|(&a, (&t, &r))| (a, rig_tform(t, r)))
-            .collect();
-        let tfp: Vec<_> = tfs
-            .iter()
-            .zip(&inp.u)
-            .map(|(&a, &p)| (a, Cvec4::from_point(rig_vec(p))))
-            .collect();
-        let tfa: Vec<_> = tf2
-            .iter()
-            .zip(&inp.alpha)
-            .map(|(&(a, b), &t)| (a, b, t))
-            .collect();
-        let mats: Vec<_> = tfs.iter().map(|&a| Matrix4::from(a)).collect();
+        let mats: Vec<_> = p.tf.iter().map(|&a| Matrix4::from(a)).collect();
         let name = if cfg!(feature = "fast-math") {
             "rigtform (fast-math)"
         } else {
             "rigtform"
         };
 
-        run(&mut group(c, "q*q"), name, &qq, |(a, b)| a * b);
-        run(&mut group(c, "q*q renormalized"), name, &qq, |(a, b)| {
+        run(&mut group(c, "q*q"), name, &p.qq, |(a, b)| a * b);
+        run(&mut group(c, "q*q renormalized"), name, &p.qq, |(a, b)| {
             a.mul_renormalized(b)
         });
-        run(&mut group(c, "rotate Cvec3"), name, &qv, |(q, v)| q * v);
+        run(&mut group(c, "rotate Cvec3"), name, &p.qv, |(q, v)| q * v);
         run(&mut group(c, "rotate Cvec4"), name, &qc, |(q, v)| q * v);
-        run(&mut group(c, "inv"), name, &q, Quat::inv);
-        run(&mut group(c, "normalize"), name, &q, Quat::normalize);
-        run(&mut group(c, "pow"), name, &qa, |(q, t)| q.pow(t));
-        run(&mut group(c, "slerp"), name, &qqa, |(a, b, t)| {
+        run(&mut group(c, "inv"), name, &p.q, Quat::inv);
+        run(&mut group(c, "normalize"), name, &p.q, Quat::normalize);
+        run(&mut group(c, "pow"), name, &p.qa, |(q, t)| q.pow(t));
+        run(&mut group(c, "slerp"), name, &p.qqa, |(a, b, t)| {
             a.slerp(b, t)
         });
-        run(&mut group(c, "nlerp"), name, &qqa, |(a, b, t)| {
+        run(&mut group(c, "nlerp"), name, &p.qqa, |(a, b, t)| {
             a.nlerp(b, t)
         });
         run(&mut group(c, "blend of 4"), name, &blend4, |e| {
@@ -222,23 +201,23 @@ fn quat_ops(c: &mut Criterion) {
         run(
             &mut group(c, "RigTForm * RigTForm"),
             name,
-            &tf2,
+            &p.tf2,
             |(a, b)| a * b,
         );
-        run(&mut group(c, "RigTForm inv"), name, &tfs, RigTForm::inv);
-        run(&mut group(c, "RigTForm * point"), name, &tfp, |(a, p)| {
+        run(&mut group(c, "RigTForm inv"), name, &p.tf, RigTForm::inv);
+        run(&mut group(c, "RigTForm * point"), name, &tfc, |(a, p)| {
             a * p
         });
         run(
             &mut group(c, "RigTForm interpolate"),
             name,
-            &tfa,
+            &p.tfa,
             |(a, b, t)| a.interpolate(b, t),
         );
         run(
             &mut group(c, "Matrix4 from RigTForm"),
             name,
-            &tfs,
+            &p.tf,
             Matrix4::from,
         );
         run(
@@ -247,6 +226,10 @@ fn quat_ops(c: &mut Criterion) {
             &mats,
             Matrix4::normal_matrix,
         );
+    }
+    // With fast-math only rigtform is measured again (the peers do not change).
+    if cfg!(feature = "fast-math") {
+        return;
     }
 
     glam_benches!(c, inp, glam, "glam (SIMD)", glam_quat, glam_vec);
@@ -261,74 +244,39 @@ fn quat_ops(c: &mut Criterion) {
 
     // nalgebra: UnitQuaternion and Isometry3, f32.
     {
-        let q: Vec<_> = inp.a.iter().map(|&q| na_quat(q)).collect();
-        let qq = pairs(&inp.a, &inp.b, na_quat, na_quat);
-        let qv: Vec<_> = inp
-            .a
-            .iter()
-            .zip(&inp.v)
-            .map(|(&q, &v)| (na_quat(q), na_vec(v)))
-            .collect();
-        let qa: Vec<_> = q.iter().zip(&inp.alpha).map(|(&q, &t)| (q, t)).collect();
-        let qqa: Vec<_> = qq
-            .iter()
-            .zip(&inp.alpha)
-            .map(|(&(a, b), &t)| (a, b, t))
-            .collect();
-        let tfs: Vec<_> = inp
-            .v
-            .iter()
-            .zip(&inp.a)
-            .map(|(&t, &r)| na_iso(t, r))
-            .collect();
-        let tf2: Vec<_> = tfs
-            .iter()
-            .zip(inp.u.iter().zip(&inp.b))
-            .map(|(&a, (&t, &r))| (a, na_iso(t, r)))
-            .collect();
-        let tfp: Vec<_> = tfs
-            .iter()
-            .zip(&inp.u)
-            .map(|(&a, &p)| (a, nalgebra::Point3::from(na_vec(p))))
-            .collect();
-        let tfa: Vec<_> = tf2
-            .iter()
-            .zip(&inp.alpha)
-            .map(|(&(a, b), &t)| (a, b, t))
-            .collect();
-        let mats: Vec<_> = tfs.iter().map(|a| a.to_homogeneous()).collect();
+        let p = Prepared::new(&inp, na_quat, na_vec, na_iso);
+        let mats: Vec<_> = p.tf.iter().map(|a| a.to_homogeneous()).collect();
         let name = "nalgebra";
-
-        run(&mut group(c, "q*q"), name, &qq, |(a, b)| a * b);
-        run(&mut group(c, "rotate Cvec3"), name, &qv, |(q, v)| q * v);
-        run(&mut group(c, "inv"), name, &q, |q| q.inverse());
-        run(&mut group(c, "normalize"), name, &q, |q| {
+        run(&mut group(c, "q*q"), name, &p.qq, |(a, b)| a * b);
+        run(&mut group(c, "rotate Cvec3"), name, &p.qv, |(q, v)| q * v);
+        run(&mut group(c, "inv"), name, &p.q, |q| q.inverse());
+        run(&mut group(c, "normalize"), name, &p.q, |q| {
             q.into_inner().normalize()
         });
-        run(&mut group(c, "pow"), name, &qa, |(q, t)| q.powf(t));
-        run(&mut group(c, "slerp"), name, &qqa, |(a, b, t)| {
+        run(&mut group(c, "pow"), name, &p.qa, |(q, t)| q.powf(t));
+        run(&mut group(c, "slerp"), name, &p.qqa, |(a, b, t)| {
             a.slerp(&b, t)
         });
-        run(&mut group(c, "nlerp"), name, &qqa, |(a, b, t)| {
+        run(&mut group(c, "nlerp"), name, &p.qqa, |(a, b, t)| {
             a.nlerp(&b, t)
         });
         run(
             &mut group(c, "RigTForm * RigTForm"),
             name,
-            &tf2,
+            &p.tf2,
             |(a, b)| a * b,
         );
-        run(&mut group(c, "RigTForm inv"), name, &tfs, |a| a.inverse());
-        run(&mut group(c, "RigTForm * point"), name, &tfp, |(a, p)| {
-            a * p
+        run(&mut group(c, "RigTForm inv"), name, &p.tf, |a| a.inverse());
+        run(&mut group(c, "RigTForm * point"), name, &p.tfv, |(a, v)| {
+            a * nalgebra::Point3::from(v)
         });
         run(
             &mut group(c, "RigTForm interpolate"),
             name,
-            &tfa,
+            &p.tfa,
             |(a, b, t)| a.lerp_slerp(&b, t),
         );
-        run(&mut group(c, "Matrix4 from RigTForm"), name, &tfs, |a| {
+        run(&mut group(c, "Matrix4 from RigTForm"), name, &p.tf, |a| {
             a.to_homogeneous()
         });
         run(&mut group(c, "normal_matrix"), name, &mats, |m| {
@@ -341,87 +289,50 @@ fn quat_ops(c: &mut Criterion) {
 
     // micromath: Quaternion (no slerp, pow or transforms).
     {
-        let q: Vec<_> = inp.a.iter().map(|&q| mm_quat(q)).collect();
-        let qq = pairs(&inp.a, &inp.b, mm_quat, mm_quat);
-        let qv: Vec<_> = inp
-            .a
-            .iter()
-            .zip(&inp.v)
-            .map(|(&q, &v)| (mm_quat(q), mm_vec(v)))
-            .collect();
+        let p = Prepared::new(&inp, mm_quat, mm_vec, |_, _| ());
         let name = "micromath";
-
-        run(&mut group(c, "q*q"), name, &qq, |(a, b)| a * b);
-        run(&mut group(c, "rotate Cvec3"), name, &qv, |(q, v)| {
+        run(&mut group(c, "q*q"), name, &p.qq, |(a, b)| a * b);
+        run(&mut group(c, "rotate Cvec3"), name, &p.qv, |(q, v)| {
             q.rotate(v)
         });
-        run(&mut group(c, "inv"), name, &q, |q| q.conj());
-        run(&mut group(c, "normalize"), name, &q, |q| q.normalize());
+        run(&mut group(c, "inv"), name, &p.q, |q| q.conj());
+        run(&mut group(c, "normalize"), name, &p.q, |q| q.normalize());
     }
 
     // cgmath: Quaternion and Decomposed (no pow, no interpolation of transforms).
     {
         use cgmath::{EuclideanSpace, InnerSpace, Matrix, Rotation, SquareMatrix, Transform};
-        let q: Vec<_> = inp.a.iter().map(|&q| cg_quat(q)).collect();
-        let qq = pairs(&inp.a, &inp.b, cg_quat, cg_quat);
-        let qv: Vec<_> = inp
-            .a
-            .iter()
-            .zip(&inp.v)
-            .map(|(&q, &v)| (cg_quat(q), cg_vec(v)))
-            .collect();
-        let qqa: Vec<_> = qq
-            .iter()
-            .zip(&inp.alpha)
-            .map(|(&(a, b), &t)| (a, b, t))
-            .collect();
-        let tfs: Vec<_> = inp
-            .v
-            .iter()
-            .zip(&inp.a)
-            .map(|(&t, &r)| cg_decomposed(t, r))
-            .collect();
-        let tf2: Vec<_> = tfs
-            .iter()
-            .zip(inp.u.iter().zip(&inp.b))
-            .map(|(&a, (&t, &r))| (a, cg_decomposed(t, r)))
-            .collect();
-        let tfp: Vec<_> = tfs
-            .iter()
-            .zip(&inp.u)
-            .map(|(&a, &p)| (a, cgmath::Point3::from_vec(cg_vec(p))))
-            .collect();
-        let mats: Vec<_> = tfs.iter().map(|&a| cgmath::Matrix4::from(a)).collect();
+        let p = Prepared::new(&inp, cg_quat, cg_vec, cg_decomposed);
+        let mats: Vec<_> = p.tf.iter().map(|&a| cgmath::Matrix4::from(a)).collect();
         let name = "cgmath";
-
-        run(&mut group(c, "q*q"), name, &qq, |(a, b)| a * b);
-        run(&mut group(c, "rotate Cvec3"), name, &qv, |(q, v)| {
+        run(&mut group(c, "q*q"), name, &p.qq, |(a, b)| a * b);
+        run(&mut group(c, "rotate Cvec3"), name, &p.qv, |(q, v)| {
             q.rotate_vector(v)
         });
-        run(&mut group(c, "inv"), name, &q, |q| q.invert());
-        run(&mut group(c, "normalize"), name, &q, |q| q.normalize());
-        run(&mut group(c, "slerp"), name, &qqa, |(a, b, t)| {
+        run(&mut group(c, "inv"), name, &p.q, |q| q.invert());
+        run(&mut group(c, "normalize"), name, &p.q, |q| q.normalize());
+        run(&mut group(c, "slerp"), name, &p.qqa, |(a, b, t)| {
             a.slerp(b, t)
         });
-        run(&mut group(c, "nlerp"), name, &qqa, |(a, b, t)| {
+        run(&mut group(c, "nlerp"), name, &p.qqa, |(a, b, t)| {
             a.nlerp(b, t)
         });
         run(
             &mut group(c, "RigTForm * RigTForm"),
             name,
-            &tf2,
+            &p.tf2,
             |(a, b)| a.concat(&b),
         );
-        run(&mut group(c, "RigTForm inv"), name, &tfs, |a| {
+        run(&mut group(c, "RigTForm inv"), name, &p.tf, |a| {
             a.inverse_transform()
         });
-        run(&mut group(c, "RigTForm * point"), name, &tfp, |(a, p)| {
-            a.transform_point(p)
+        run(&mut group(c, "RigTForm * point"), name, &p.tfv, |(a, v)| {
+            a.transform_point(cgmath::Point3::from_vec(v))
         });
         run(
             &mut group(c, "Matrix4 from RigTForm"),
             name,
-            &tfs,
+            &p.tf,
             cgmath::Matrix4::from,
         );
         run(&mut group(c, "normal_matrix"), name, &mats, |m| {

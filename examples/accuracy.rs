@@ -218,149 +218,165 @@ fn slerp_table(draws: usize, rigtform_only: bool) {
     println!();
 }
 
+/// The four measurements of the other operations: each draws its inputs,
+/// calls one library's operation (given as a plain function on arrays) and
+/// tallies the error.
+fn product(d: &mut Draws, t: &mut Tally, f: fn([f32; 4], [f32; 4]) -> [f32; 4]) {
+    let (a, b) = (d.unit_quat().into_array(), d.unit_quat().into_array());
+    let want = to64(a) * to64(b);
+    t.see(catch_unwind(|| f(a, b)), |q| angle_error(q, want));
+}
+fn power(d: &mut Draws, t: &mut Tally, f: fn([f32; 4], f32) -> [f32; 4]) {
+    // For w < 0 the notes' pow turns the long way and nalgebra's the short
+    // way: both are powers, so only w >= 0 is compared.
+    let q = d.unit_quat().cn().into_array();
+    let alpha = d.uniform(-2.0, 3.0);
+    let want = pow64(to64(q), alpha);
+    t.see(catch_unwind(|| f(q, alpha as f32)), |q| {
+        angle_error(q, want)
+    });
+}
+fn normalized(d: &mut Draws, t: &mut Tally, f: fn([f32; 4]) -> [f32; 4]) {
+    let s = d.uniform(0.5, 2.0) as f32;
+    let q = d.unit_quat().into_array().map(|c| c * s);
+    t.see(catch_unwind(|| f(q)), |q| (to64(q).norm() - 1.0).abs());
+}
+fn rotated(d: &mut Draws, t: &mut Tally, f: fn([f32; 4], [f32; 3]) -> [f32; 3]) {
+    let (q, v) = (d.unit_quat().into_array(), d.unit_vec64());
+    let want = na::UnitQuaternion::new_normalize(to64(q)) * v;
+    let got = catch_unwind(|| {
+        let [x, y, z] = f(q, [v.x as f32, v.y as f32, v.z as f32]);
+        [0.0, x, y, z]
+    });
+    t.see(got, |g| {
+        (na::Vector3::new(g[1] as f64, g[2] as f64, g[3] as f64) - want).norm()
+    });
+}
+
+/// How one operation of one library is measured.
+enum Measure {
+    Product(fn([f32; 4], [f32; 4]) -> [f32; 4]),
+    Power(fn([f32; 4], f32) -> [f32; 4]),
+    Normalize(fn([f32; 4]) -> [f32; 4]),
+    Rotate(fn([f32; 4], [f32; 3]) -> [f32; 3]),
+}
+
+impl Measure {
+    fn name(&self) -> &'static str {
+        match self {
+            Measure::Product(_) => "q * q (rad)",
+            Measure::Power(_) => "pow of w >= 0, t in [-2, 3] (rad)",
+            Measure::Normalize(_) => "normalize of norm 0.5 to 2: \\|norm - 1\\|",
+            Measure::Rotate(_) => "rotate, error / \\|v\\|",
+        }
+    }
+    fn once(&self, d: &mut Draws, t: &mut Tally) {
+        match *self {
+            Measure::Product(f) => product(d, t, f),
+            Measure::Power(f) => power(d, t, f),
+            Measure::Normalize(f) => normalized(d, t, f),
+            Measure::Rotate(f) => rotated(d, t, f),
+        }
+    }
+}
+
+fn glam4(q: glam::Quat) -> [f32; 4] {
+    [q.w, q.x, q.y, q.z]
+}
+fn na4(q: na::Quaternion<f32>) -> [f32; 4] {
+    [q.w, q.i, q.j, q.k]
+}
+
 /// `q * q`, rotate, normalize and pow on random unit inputs.
 fn other_ops_table(draws: usize, rigtform_only: bool) {
     println!("Other operations on random unit inputs (max / 99th percentile):\n");
     println!("| operation | library | error |");
     println!("| --- | --- | --- |");
-    type Op = (&'static str, &'static str, fn(&mut Draws, &mut Tally));
-    let mut ops: Vec<Op> = vec![
-        ("q * q (rad)", "rigtform", |d, t| {
-            let (a, b) = (
-                rig_quat(d.unit_quat().into_array()),
-                rig_quat(d.unit_quat().into_array()),
-            );
-            let want = to64(a.into_array()) * to64(b.into_array());
-            t.see(Ok((a * b).into_array()), |q| angle_error(q, want));
-        }),
-        ("pow of w >= 0, t in [-2, 3] (rad)", "rigtform", |d, t| {
-            let q = d.unit_quat().cn().into_array();
-            let alpha = d.uniform(-2.0, 3.0);
-            let want = pow64(to64(q), alpha);
-            let r = catch_unwind(|| rig_quat(q).pow(alpha as f32).into_array());
-            t.see(r, |q| angle_error(q, want));
-        }),
+    let mut ops: Vec<(&str, Measure)> = vec![
         (
-            "normalize of norm 0.5 to 2: \\|norm - 1\\|",
             "rigtform",
-            |d, t| {
-                let s = d.uniform(0.5, 2.0) as f32;
-                let q = d.unit_quat().into_array().map(|c| c * s);
-                t.see(Ok(rig_quat(q).normalize().into_array()), |q| {
-                    (to64(q).norm() - 1.0).abs()
-                });
-            },
+            Measure::Product(|a, b| (rig_quat(a) * rig_quat(b)).into_array()),
         ),
-        ("rotate, error / \\|v\\|", "rigtform", |d, t| {
-            let (q, v) = (d.unit_quat().into_array(), d.unit_vec64());
-            let want = na::UnitQuaternion::new_normalize(to64(q)) * v;
-            let got = rig_quat(q) * rig_vec([v.x as f32, v.y as f32, v.z as f32]);
-            t.see(Ok([0.0, got.x, got.y, got.z]), |g| {
-                (na::Vector3::new(g[1] as f64, g[2] as f64, g[3] as f64) - want).norm()
-            });
-        }),
+        (
+            "rigtform",
+            Measure::Power(|q, t| rig_quat(q).pow(t).into_array()),
+        ),
+        (
+            "rigtform",
+            Measure::Normalize(|q| rig_quat(q).normalize().into_array()),
+        ),
+        (
+            "rigtform",
+            Measure::Rotate(|q, v| {
+                let r = rig_quat(q) * rig_vec(v);
+                [r.x, r.y, r.z]
+            }),
+        ),
     ];
     if !rigtform_only {
-        ops.extend::<[Op; 10]>([
-            ("q * q (rad)", "glam", |d, t| {
-                let (a, b) = (d.unit_quat().into_array(), d.unit_quat().into_array());
-                let q = glam_quat(a) * glam_quat(b);
-                t.see(Ok([q.w, q.x, q.y, q.z]), |q| {
-                    angle_error(q, to64(a) * to64(b))
-                });
-            }),
-            ("q * q (rad)", "nalgebra", |d, t| {
-                let (a, b) = (d.unit_quat().into_array(), d.unit_quat().into_array());
-                let q = na_quat(a) * na_quat(b);
-                t.see(Ok([q.w, q.i, q.j, q.k]), |q| {
-                    angle_error(q, to64(a) * to64(b))
-                });
-            }),
-            ("q * q (rad)", "micromath", |d, t| {
-                let (a, b) = (d.unit_quat().into_array(), d.unit_quat().into_array());
-                let q = mm_quat(a) * mm_quat(b);
-                t.see(Ok(q.to_array()), |q| angle_error(q, to64(a) * to64(b)));
-            }),
-            ("pow of w >= 0, t in [-2, 3] (rad)", "nalgebra", |d, t| {
-                let q = d.unit_quat().cn().into_array();
-                let alpha = d.uniform(-2.0, 3.0);
-                let want = pow64(to64(q), alpha);
-                let r = catch_unwind(|| {
-                    let p = na_quat(q).powf(alpha as f32);
-                    [p.w, p.i, p.j, p.k]
-                });
-                // For w < 0 the notes' pow turns the long way and nalgebra's
-                // the short way: both are powers, so only w >= 0 is compared.
-                t.see(r, |q| angle_error(q, want));
-            }),
+        ops.extend([
             (
-                "normalize of norm 0.5 to 2: \\|norm - 1\\|",
                 "glam",
-                |d, t| {
-                    let s = d.uniform(0.5, 2.0) as f32;
-                    let q = d.unit_quat().into_array().map(|c| c * s);
-                    let n = glam_quat(q).normalize();
-                    t.see(Ok([n.w, n.x, n.y, n.z]), |q| (to64(q).norm() - 1.0).abs());
-                },
+                Measure::Product(|a, b| glam4(glam_quat(a) * glam_quat(b))),
             ),
             (
-                "normalize of norm 0.5 to 2: \\|norm - 1\\|",
                 "nalgebra",
-                |d, t| {
-                    let s = d.uniform(0.5, 2.0) as f32;
-                    let q = d.unit_quat().into_array().map(|c| c * s);
-                    let n = na::Quaternion::new(q[0], q[1], q[2], q[3]).normalize();
-                    t.see(Ok([n.w, n.i, n.j, n.k]), |q| (to64(q).norm() - 1.0).abs());
-                },
+                Measure::Product(|a, b| na4(*(na_quat(a) * na_quat(b)).as_ref())),
             ),
             (
-                "normalize of norm 0.5 to 2: \\|norm - 1\\|",
                 "micromath",
-                |d, t| {
-                    let s = d.uniform(0.5, 2.0) as f32;
-                    let q = d.unit_quat().into_array().map(|c| c * s);
-                    let r = catch_unwind(|| mm_quat(q).normalize().to_array());
-                    t.see(r, |q| (to64(q).norm() - 1.0).abs());
-                },
+                Measure::Product(|a, b| (mm_quat(a) * mm_quat(b)).to_array()),
             ),
-            ("rotate, error / \\|v\\|", "glam", |d, t| {
-                let (q, v) = (d.unit_quat().into_array(), d.unit_vec64());
-                let want = na::UnitQuaternion::new_normalize(to64(q)) * v;
-                let g = glam_quat(q) * glam_vec([v.x as f32, v.y as f32, v.z as f32]);
-                t.see(Ok([0.0, g.x, g.y, g.z]), |g| {
-                    (na::Vector3::new(g[1] as f64, g[2] as f64, g[3] as f64) - want).norm()
-                });
-            }),
-            ("rotate, error / \\|v\\|", "nalgebra", |d, t| {
-                let (q, v) = (d.unit_quat().into_array(), d.unit_vec64());
-                let want = na::UnitQuaternion::new_normalize(to64(q)) * v;
-                let g = na_quat(q) * na_vec([v.x as f32, v.y as f32, v.z as f32]);
-                t.see(Ok([0.0, g.x, g.y, g.z]), |g| {
-                    (na::Vector3::new(g[1] as f64, g[2] as f64, g[3] as f64) - want).norm()
-                });
-            }),
-            ("rotate, error / \\|v\\|", "micromath", |d, t| {
-                let (q, v) = (d.unit_quat().into_array(), d.unit_vec64());
-                let want = na::UnitQuaternion::new_normalize(to64(q)) * v;
-                let g = mm_quat(q).rotate(mm_vec([v.x as f32, v.y as f32, v.z as f32]));
-                t.see(Ok([0.0, g.x, g.y, g.z]), |g| {
-                    (na::Vector3::new(g[1] as f64, g[2] as f64, g[3] as f64) - want).norm()
-                });
-            }),
+            (
+                "nalgebra",
+                Measure::Power(|q, t| na4(*na_quat(q).powf(t).as_ref())),
+            ),
+            (
+                "glam",
+                Measure::Normalize(|q| glam4(glam_quat(q).normalize())),
+            ),
+            (
+                "nalgebra",
+                Measure::Normalize(
+                    |q| na4(na::Quaternion::new(q[0], q[1], q[2], q[3]).normalize()),
+                ),
+            ),
+            (
+                "micromath",
+                Measure::Normalize(|q| mm_quat(q).normalize().to_array()),
+            ),
+            (
+                "glam",
+                Measure::Rotate(|q, v| (glam_quat(q) * glam_vec(v)).to_array()),
+            ),
+            (
+                "nalgebra",
+                Measure::Rotate(|q, v| {
+                    let r = na_quat(q) * na_vec(v);
+                    [r.x, r.y, r.z]
+                }),
+            ),
+            (
+                "micromath",
+                Measure::Rotate(|q, v| {
+                    let r = mm_quat(q).rotate(mm_vec(v));
+                    [r.x, r.y, r.z]
+                }),
+            ),
         ]);
     }
-    ops.sort_by_key(|&(op, _, _)| op);
-    for (op, library, f) in ops {
+    ops.sort_by_key(|(_, m)| m.name());
+    for (library, measure) in ops {
         let (mut d, mut tally) = (Draws::new(7), Tally::default());
         for _ in 0..draws {
-            f(&mut d, &mut tally);
+            measure.once(&mut d, &mut tally);
         }
         let library = if library == "rigtform" {
             rigtform_name()
         } else {
             library.into()
         };
-        println!("| {op} | {library} | {} |", tally.cell());
+        println!("| {} | {library} | {} |", measure.name(), tally.cell());
     }
     println!();
 }
