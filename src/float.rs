@@ -232,7 +232,12 @@ const TWO_OVER_PI: [u32; 8] = [
 /// 64-bit fraction of a turn by it and keeping the top 64 bits gives
 /// radians in units of 2^-61.
 const TWO_PI_FIXED: u64 = 14_488_038_916_154_245_685;
-
+/// 2^-12, 2^-24 and 2^-48, exact: the weights of the parts of the reduced
+/// angle (radians in units of 2^-61, shifted right by 37 and 13, and
+/// perhaps up by 12 first).
+const TWO_POW_M12: f32 = f32::from_bits((127 - 12) << 23);
+const TWO_POW_M24: f32 = f32::from_bits((127 - 24) << 23);
+const TWO_POW_M48: f32 = f32::from_bits((127 - 48) << 23);
 
 /// The ulp bounds of the default kernels, as the doc comments state them and
 /// `kernels_are_within_their_ulp_bounds_on_a_sample` and
@@ -316,11 +321,13 @@ fn sum_and_tail(hi: f32, lo: f32) -> (f32, f32) {
 #[must_use]
 pub(crate) fn atan2_kernel(y: f32, x: f32) -> f32 {
     let (b, a) = (y.abs(), x.abs());
-    // Zeros, infinities and NaN take the cold path, so that the common one
-    // has no branch the data can mispredict.
-    if !(a < f32::INFINITY && b < f32::INFINITY && a + b > 0.0) {
-        return atan2_of_extremes(y, x);
-    }
+    // IEEE 754's limits, by substitution rather than a separate path: an
+    // infinite argument counts as 1 and a finite one beside it as 0, and
+    // two zeros as (0, 1). NaN stays NaN throughout.
+    let infinite = a == f32::INFINITY || b == f32::INFINITY;
+    let b = select(infinite, select(b == f32::INFINITY, 1.0, 0.0), b);
+    let a = select(infinite, select(a == f32::INFINITY, 1.0, 0.0), a);
+    let a = select(a == 0.0 && b == 0.0, 1.0, a);
     // The angle of (a, b) in [0, pi/2] as hi + atan(num / den) + lo: at
     // most 1/2 rad, at least pi/2 - 1/2, or between, where a and b are
     // within a factor 2 of each other (and b + a can only overflow if b is
@@ -348,31 +355,6 @@ const SIGN: u32 = 0x8000_0000;
 fn select(c: bool, a: f32, b: f32) -> f32 {
     let mask = u32::from(c).wrapping_neg();
     f32::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))
-}
-
-/// [`atan2_kernel`] where both arguments are zero, either is infinite, or
-/// either is NaN: IEEE 754's values for zeros and infinities, NaN for NaN.
-#[cold]
-fn atan2_of_extremes(y: f32, x: f32) -> f32 {
-    let (b, a) = (y.abs(), x.abs());
-    let phi = if a.is_nan() || b.is_nan() {
-        return f32::NAN;
-    } else if b == 0.0 {
-        0.0
-    } else if a.is_infinite() && b.is_infinite() {
-        PIO4_HI
-    } else if a.is_infinite() {
-        0.0
-    } else {
-        // b infinite, or a == 0.
-        PIO2_HI
-    };
-    let phi = if x.is_sign_negative() {
-        PI_HI - phi
-    } else {
-        phi
-    };
-    f32::from_bits(phi.to_bits() | (y.to_bits() & SIGN))
 }
 
 /// The f32-only sine and cosine of the default backend (see [`sin_cos`]).
@@ -496,27 +478,21 @@ fn reduce_by_quarter_turns(a: f32) -> (u32, f32, f32) {
     let radians = ((i128::from(rest) * i128::from(TWO_PI_FIXED)) >> 64) as i64;
     // To f32 through two 24-bit integers, each converted exactly (one
     // instruction each on a Cortex-M4F, where i64 to f32 is a library
-    // call): the magnitude is shifted up to its leading one, and its top 48
-    // bits are split in two; what lies below is 2^-48 of r.
-    let magnitude = radians.unsigned_abs();
-    if magnitude == 0 {
-        return (quadrant as u32, 0.0, 0.0);
-    }
-    // |radians| < 2^61 (a quarter turn is below 2^61 units): 3 <= shift < 64.
-    let shift = magnitude.leading_zeros();
-    let top = magnitude << shift;
-    let high = (top >> 40) as u32 as f32;
-    let low = ((top >> 16) & 0x00ff_ffff) as u32 as f32;
-    // The weights of the two parts, 2^(40 - 61 - shift) and 2^(16 - 61 -
-    // shift), exact powers of two (normal: their exponents are above -126).
-    let high = high * f32::from_bits((127 + 40 - 61 - shift) << 23);
-    let low = low * f32::from_bits((127 + 16 - 61 - shift) << 23);
-    let (r, t) = sum_and_tail(high, low);
-    if radians < 0 {
-        (quadrant as u32, -r, -t)
+    // call): bits 37 to 60 (with the sign) and 13 to 36. Where the angle is
+    // small (a near multiple of pi/2), it is first shifted up by 12 bits,
+    // so that the two keep at least 31 significant bits: no f32 lies closer
+    // to a multiple of pi/2 than 2^-31 rad (exhaustive_kernel_sweeps checks
+    // every one).
+    let small = radians.unsigned_abs() < 1 << 49;
+    let (radians, weight) = if small {
+        (radians << 12, TWO_POW_M12)
     } else {
-        (quadrant as u32, r, t)
-    }
+        (radians, 1.0)
+    };
+    let high = (radians >> 37) as i32 as f32 * (TWO_POW_M24 * weight);
+    let low = ((radians >> 13) & 0x00ff_ffff) as i32 as f32 * (TWO_POW_M48 * weight);
+    let (r, t) = sum_and_tail(high, low);
+    (quadrant as u32, r, t)
 }
 
 /// 2^-100: below this, a sum of squares may have lost precision to underflow.
