@@ -521,10 +521,10 @@ impl Quat {
             // the identity, and so is its every power. And alpha = 0.
             return self;
         }
-        // |u| = |self|^2 |other| sin(phi) and dot = |self| |other| cos(phi):
-        // with both sides times |self| u.scale, one square root gives the
-        // notes' phi in [0, pi/2].
-        let phi = float::atan2(float::sqrt(u.sum * n2), n2 * dot * u.scale);
+        // |u| = |self|^2 |other| sin(phi) and |self| dot = |self|^2 |other|
+        // cos(phi), both times u.scale: the notes' phi in [0, pi/2].
+        let n = float::sqrt(n2);
+        let phi = float::atan2(float::sqrt(u.sum), n * dot * u.scale);
         // Extrapolating (where the two coefficients below would grow and
         // their rounding show in the norm), and with fast-math (whose sines
         // are off by about 1e-3 absolute, too much to divide by a small
@@ -543,7 +543,7 @@ impl Quat {
             // (any angle is as right as any other), so alpha is clamped.
             let alpha = alpha.clamp(-f32::MAX / 4.0, f32::MAX / 4.0);
             let (s, c) = float::sin_cos(alpha * phi);
-            return self.weighted_sum(c, dir, s * float::sqrt(n2));
+            return self.weighted_sum(c, dir, s * n);
         }
         // alpha phi and (1 - alpha) phi add up to phi exactly where f32
         // allows (Sterbenz), so that the result stays on the arc.
