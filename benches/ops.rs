@@ -9,8 +9,8 @@
 //! inputs or left out); criterion reports the time per iteration, and the
 //! README's table divides its median by 1,024.
 //!
-//! `cargo bench --bench ops` runs them all; `cargo bench --bench ops -- slerp`
-//! only the slerp group.
+//! `cargo bench --bench ops` runs them all, operation by operation;
+//! `cargo bench --bench ops -- slerp` only the slerp group.
 
 #[path = "inputs.rs"]
 mod inputs;
@@ -27,15 +27,35 @@ const N: usize = 1024;
 
 type Group<'a> = BenchmarkGroup<'a, criterion::measurement::WallTime>;
 
-/// Times `f` over every element of `inputs` (converted beforehand, outside the timing).
-fn run<I: Copy, O>(group: &mut Group<'_>, library: &str, inputs: &[I], f: impl Fn(I) -> O) {
-    group.bench_function(library, |b| {
-        b.iter(|| {
-            for &x in black_box(inputs) {
-                black_box(f(x));
-            }
-        })
-    });
+/// One benchmark, to be run later: every library's benchmarks are set up
+/// first and then run operation by operation, so that a burst of load from
+/// elsewhere on the machine hits the libraries of one operation alike.
+type Job = (&'static str, Box<dyn Fn(&mut Criterion)>);
+
+/// Adds the benchmark of `f` over every element of `inputs` (converted
+/// beforehand, outside the timing) to `jobs`.
+fn run<I: Copy + 'static, O>(
+    jobs: &mut Vec<Job>,
+    op: &'static str,
+    library: &'static str,
+    inputs: &'static [I],
+    f: impl Fn(I) -> O + 'static,
+) {
+    let job = move |c: &mut Criterion| {
+        group(c, op).bench_function(library, |b| {
+            b.iter(|| {
+                for &x in black_box(inputs) {
+                    black_box(f(x));
+                }
+            })
+        });
+    };
+    jobs.push((op, Box::new(job)));
+}
+
+/// `value`, kept for the rest of the process (the jobs refer to it).
+fn keep<T>(value: T) -> &'static T {
+    Box::leak(Box::new(value))
 }
 
 fn group<'a>(c: &'a mut Criterion, name: &str) -> Group<'a> {
@@ -101,51 +121,44 @@ impl<Q: Copy, V: Copy, T: Copy> Prepared<Q, V, T> {
 /// (translation, rotation) pair.
 macro_rules! glam_benches {
     ($c:ident, $inp:ident, $glam:ident, $name:expr, $quat:ident, $vec:ident) => {{
-        let p = Prepared::new(&$inp, $quat, $vec, |t, r| ($vec(t), $quat(r)));
-        let mats: Vec<_> =
+        let p = keep(Prepared::new($inp, $quat, $vec, |t, r| ($vec(t), $quat(r))));
+        let mats: &'static [_] = keep::<Vec<_>>(
             p.tf.iter()
                 .map(|&(t, r)| $glam::Mat4::from_rotation_translation(r, t))
-                .collect();
+                .collect(),
+        );
         let name = $name;
-        run(&mut group($c, "q*q"), name, &p.qq, |(a, b)| a * b);
-        run(&mut group($c, "rotate Cvec3"), name, &p.qv, |(q, v)| q * v);
-        run(&mut group($c, "inv"), name, &p.q, |q| q.inverse());
-        run(&mut group($c, "normalize"), name, &p.q, |q| q.normalize());
-        run(&mut group($c, "slerp"), name, &p.qqa, |(a, b, t)| {
-            a.slerp(b, t)
-        });
-        run(&mut group($c, "nlerp"), name, &p.qqa, |(a, b, t)| {
-            a.lerp(b, t)
-        });
+        run($c, "q*q", name, &p.qq, |(a, b)| a * b);
+        run($c, "rotate Cvec3", name, &p.qv, |(q, v)| q * v);
+        run($c, "inv", name, &p.q, |q| q.inverse());
+        run($c, "normalize", name, &p.q, |q| q.normalize());
+        run($c, "slerp", name, &p.qqa, |(a, b, t)| a.slerp(b, t));
+        run($c, "nlerp", name, &p.qqa, |(a, b, t)| a.lerp(b, t));
         run(
-            &mut group($c, "RigTForm * RigTForm"),
+            $c,
+            "RigTForm * RigTForm",
             name,
             &p.tf2,
             |((t1, r1), (t2, r2))| (t1 + r1 * t2, r1 * r2),
         );
-        run(&mut group($c, "RigTForm inv"), name, &p.tf, |(t, r)| {
+        run($c, "RigTForm inv", name, &p.tf, |(t, r)| {
             let ri = r.inverse();
             (-(ri * t), ri)
         });
+        run($c, "RigTForm * point", name, &p.tfv, |((t, r), v)| {
+            r * v + t
+        });
         run(
-            &mut group($c, "RigTForm * point"),
-            name,
-            &p.tfv,
-            |((t, r), v)| r * v + t,
-        );
-        run(
-            &mut group($c, "RigTForm interpolate"),
+            $c,
+            "RigTForm interpolate",
             name,
             &p.tfa,
             |((t1, r1), (t2, r2), a)| (t1.lerp(t2, a), r1.slerp(r2, a)),
         );
-        run(
-            &mut group($c, "Matrix4 from RigTForm"),
-            name,
-            &p.tf,
-            |(t, r)| $glam::Mat4::from_rotation_translation(r, t),
-        );
-        run(&mut group($c, "normal_matrix"), name, &mats, |m| {
+        run($c, "Matrix4 from RigTForm", name, &p.tf, |(t, r)| {
+            $glam::Mat4::from_rotation_translation(r, t)
+        });
+        run($c, "normal_matrix", name, mats, |m| {
             $glam::Mat3::from_mat4(m).inverse().transpose()
         });
     }};
@@ -153,88 +166,96 @@ macro_rules! glam_benches {
 
 fn quat_ops(c: &mut Criterion) {
     let inp = Inputs::new(N, 1);
+    let jobs = &mut Vec::new();
 
     // rigtform, under the name of its backend.
     {
-        let p = Prepared::new(&inp, rig_quat, rig_vec, rig_tform);
-        let qc: Vec<_> =
+        let p = keep(Prepared::new(&inp, rig_quat, rig_vec, rig_tform));
+        let qc: &'static [_] = keep::<Vec<_>>(
             p.qv.iter()
                 .map(|&(q, v)| (q, Cvec4::from_point(v)))
-                .collect();
-        let tfc: Vec<_> = p
-            .tfv
-            .iter()
-            .map(|&(a, v)| (a, Cvec4::from_point(v)))
-            .collect();
-        let blend4: Vec<_> = (0..N)
-            .map(|i| {
-                let (a, b, t) = p.qqa[i];
-                let (c, d, _) = p.qqa[(i + 1) % N];
-                [(a, 1.0 - t), (b, t), (c, 0.5), (d, 0.25)]
-            })
-            .collect();
-        let mats: Vec<_> = p.tf.iter().map(|&a| Matrix4::from(a)).collect();
+                .collect(),
+        );
+        let tfc: &'static [_] = keep::<Vec<_>>(
+            p.tfv
+                .iter()
+                .map(|&(a, v)| (a, Cvec4::from_point(v)))
+                .collect(),
+        );
+        let blend4: &'static [_] = keep::<Vec<_>>(
+            (0..N)
+                .map(|i| {
+                    let (a, b, t) = p.qqa[i];
+                    let (c, d, _) = p.qqa[(i + 1) % N];
+                    [(a, 1.0 - t), (b, t), (c, 0.5), (d, 0.25)]
+                })
+                .collect(),
+        );
+        let mats: &'static [_] = keep::<Vec<_>>(p.tf.iter().map(|&a| Matrix4::from(a)).collect());
         let name = if cfg!(feature = "fast-math") {
             "rigtform (fast-math)"
         } else {
             "rigtform"
         };
 
-        run(&mut group(c, "q*q"), name, &p.qq, |(a, b)| a * b);
-        run(&mut group(c, "q*q renormalized"), name, &p.qq, |(a, b)| {
+        run(jobs, "q*q", name, &p.qq, |(a, b)| a * b);
+        run(jobs, "q*q renormalized", name, &p.qq, |(a, b)| {
             a.mul_renormalized(b)
         });
-        run(&mut group(c, "rotate Cvec3"), name, &p.qv, |(q, v)| q * v);
-        run(&mut group(c, "rotate Cvec4"), name, &qc, |(q, v)| q * v);
-        run(&mut group(c, "inv"), name, &p.q, Quat::inv);
-        run(&mut group(c, "normalize"), name, &p.q, Quat::normalize);
-        run(&mut group(c, "pow"), name, &p.qa, |(q, t)| q.pow(t));
-        run(&mut group(c, "slerp"), name, &p.qqa, |(a, b, t)| {
-            a.slerp(b, t)
+        run(jobs, "rotate Cvec3", name, &p.qv, |(q, v)| q * v);
+        run(jobs, "rotate Cvec4", name, qc, |(q, v)| q * v);
+        run(jobs, "inv", name, &p.q, Quat::inv);
+        run(jobs, "normalize", name, &p.q, Quat::normalize);
+        run(jobs, "pow", name, &p.qa, |(q, t)| q.pow(t));
+        run(jobs, "slerp", name, &p.qqa, |(a, b, t)| a.slerp(b, t));
+        run(jobs, "nlerp", name, &p.qqa, |(a, b, t)| a.nlerp(b, t));
+        run(jobs, "blend of 4", name, blend4, |e| Quat::blend(&e));
+        run(jobs, "RigTForm * RigTForm", name, &p.tf2, |(a, b)| a * b);
+        run(jobs, "RigTForm inv", name, &p.tf, RigTForm::inv);
+        run(jobs, "RigTForm * point", name, tfc, |(a, p)| a * p);
+        run(jobs, "RigTForm interpolate", name, &p.tfa, |(a, b, t)| {
+            a.interpolate(b, t)
         });
-        run(&mut group(c, "nlerp"), name, &p.qqa, |(a, b, t)| {
-            a.nlerp(b, t)
-        });
-        run(&mut group(c, "blend of 4"), name, &blend4, |e| {
-            Quat::blend(&e)
-        });
-        run(
-            &mut group(c, "RigTForm * RigTForm"),
-            name,
-            &p.tf2,
-            |(a, b)| a * b,
-        );
-        run(&mut group(c, "RigTForm inv"), name, &p.tf, RigTForm::inv);
-        run(&mut group(c, "RigTForm * point"), name, &tfc, |(a, p)| {
-            a * p
-        });
-        run(
-            &mut group(c, "RigTForm interpolate"),
-            name,
-            &p.tfa,
-            |(a, b, t)| a.interpolate(b, t),
-        );
-        run(
-            &mut group(c, "Matrix4 from RigTForm"),
-            name,
-            &p.tf,
-            Matrix4::from,
-        );
-        run(
-            &mut group(c, "normal_matrix"),
-            name,
-            &mats,
-            Matrix4::normal_matrix,
-        );
+        run(jobs, "Matrix4 from RigTForm", name, &p.tf, Matrix4::from);
+        run(jobs, "normal_matrix", name, mats, Matrix4::normal_matrix);
     }
     // With fast-math only rigtform is measured again (the peers do not change).
-    if cfg!(feature = "fast-math") {
-        return;
+    if !cfg!(feature = "fast-math") {
+        peers(jobs, &inp);
     }
+    // Operation by operation, in the order of the README's table (a stable
+    // sort keeps rigtform first within each).
+    jobs.sort_by_key(|&(op, _)| OPS.iter().position(|&o| o == op));
+    for (_, job) in jobs.iter() {
+        job(c);
+    }
+}
 
-    glam_benches!(c, inp, glam, "glam (SIMD)", glam_quat, glam_vec);
+/// The operations, in the order they are run and tabulated.
+const OPS: [&str; 16] = [
+    "q*q",
+    "q*q renormalized",
+    "rotate Cvec3",
+    "rotate Cvec4",
+    "inv",
+    "normalize",
+    "pow",
+    "slerp",
+    "nlerp",
+    "blend of 4",
+    "RigTForm * RigTForm",
+    "RigTForm inv",
+    "RigTForm * point",
+    "RigTForm interpolate",
+    "Matrix4 from RigTForm",
+    "normal_matrix",
+];
+
+/// The peers' benchmarks.
+fn peers(jobs: &mut Vec<Job>, inp: &Inputs) {
+    glam_benches!(jobs, inp, glam, "glam (SIMD)", glam_quat, glam_vec);
     glam_benches!(
-        c,
+        jobs,
         inp,
         glam_scalar,
         "glam (scalar-math)",
@@ -244,42 +265,30 @@ fn quat_ops(c: &mut Criterion) {
 
     // nalgebra: UnitQuaternion and Isometry3, f32.
     {
-        let p = Prepared::new(&inp, na_quat, na_vec, na_iso);
-        let mats: Vec<_> = p.tf.iter().map(|a| a.to_homogeneous()).collect();
+        let p = keep(Prepared::new(inp, na_quat, na_vec, na_iso));
+        let mats: &'static [_] = keep::<Vec<_>>(p.tf.iter().map(|a| a.to_homogeneous()).collect());
         let name = "nalgebra";
-        run(&mut group(c, "q*q"), name, &p.qq, |(a, b)| a * b);
-        run(&mut group(c, "rotate Cvec3"), name, &p.qv, |(q, v)| q * v);
-        run(&mut group(c, "inv"), name, &p.q, |q| q.inverse());
-        run(&mut group(c, "normalize"), name, &p.q, |q| {
+        run(jobs, "q*q", name, &p.qq, |(a, b)| a * b);
+        run(jobs, "rotate Cvec3", name, &p.qv, |(q, v)| q * v);
+        run(jobs, "inv", name, &p.q, |q| q.inverse());
+        run(jobs, "normalize", name, &p.q, |q| {
             q.into_inner().normalize()
         });
-        run(&mut group(c, "pow"), name, &p.qa, |(q, t)| q.powf(t));
-        run(&mut group(c, "slerp"), name, &p.qqa, |(a, b, t)| {
-            a.slerp(&b, t)
-        });
-        run(&mut group(c, "nlerp"), name, &p.qqa, |(a, b, t)| {
-            a.nlerp(&b, t)
-        });
-        run(
-            &mut group(c, "RigTForm * RigTForm"),
-            name,
-            &p.tf2,
-            |(a, b)| a * b,
-        );
-        run(&mut group(c, "RigTForm inv"), name, &p.tf, |a| a.inverse());
-        run(&mut group(c, "RigTForm * point"), name, &p.tfv, |(a, v)| {
+        run(jobs, "pow", name, &p.qa, |(q, t)| q.powf(t));
+        run(jobs, "slerp", name, &p.qqa, |(a, b, t)| a.slerp(&b, t));
+        run(jobs, "nlerp", name, &p.qqa, |(a, b, t)| a.nlerp(&b, t));
+        run(jobs, "RigTForm * RigTForm", name, &p.tf2, |(a, b)| a * b);
+        run(jobs, "RigTForm inv", name, &p.tf, |a| a.inverse());
+        run(jobs, "RigTForm * point", name, &p.tfv, |(a, v)| {
             a * nalgebra::Point3::from(v)
         });
-        run(
-            &mut group(c, "RigTForm interpolate"),
-            name,
-            &p.tfa,
-            |(a, b, t)| a.lerp_slerp(&b, t),
-        );
-        run(&mut group(c, "Matrix4 from RigTForm"), name, &p.tf, |a| {
+        run(jobs, "RigTForm interpolate", name, &p.tfa, |(a, b, t)| {
+            a.lerp_slerp(&b, t)
+        });
+        run(jobs, "Matrix4 from RigTForm", name, &p.tf, |a| {
             a.to_homogeneous()
         });
-        run(&mut group(c, "normal_matrix"), name, &mats, |m| {
+        run(jobs, "normal_matrix", name, mats, |m| {
             m.fixed_view::<3, 3>(0, 0)
                 .into_owned()
                 .try_inverse()
@@ -289,53 +298,44 @@ fn quat_ops(c: &mut Criterion) {
 
     // micromath: Quaternion (no slerp, pow or transforms).
     {
-        let p = Prepared::new(&inp, mm_quat, mm_vec, |_, _| ());
+        let p = keep(Prepared::new(inp, mm_quat, mm_vec, |_, _| ()));
         let name = "micromath";
-        run(&mut group(c, "q*q"), name, &p.qq, |(a, b)| a * b);
-        run(&mut group(c, "rotate Cvec3"), name, &p.qv, |(q, v)| {
-            q.rotate(v)
-        });
-        run(&mut group(c, "inv"), name, &p.q, |q| q.conj());
-        run(&mut group(c, "normalize"), name, &p.q, |q| q.normalize());
+        run(jobs, "q*q", name, &p.qq, |(a, b)| a * b);
+        run(jobs, "rotate Cvec3", name, &p.qv, |(q, v)| q.rotate(v));
+        run(jobs, "inv", name, &p.q, |q| q.conj());
+        run(jobs, "normalize", name, &p.q, |q| q.normalize());
     }
 
     // cgmath: Quaternion and Decomposed (no pow, no interpolation of transforms).
     {
         use cgmath::{EuclideanSpace, InnerSpace, Matrix, Rotation, SquareMatrix, Transform};
-        let p = Prepared::new(&inp, cg_quat, cg_vec, cg_decomposed);
-        let mats: Vec<_> = p.tf.iter().map(|&a| cgmath::Matrix4::from(a)).collect();
+        let p = keep(Prepared::new(inp, cg_quat, cg_vec, cg_decomposed));
+        let mats: &'static [_] =
+            keep::<Vec<_>>(p.tf.iter().map(|&a| cgmath::Matrix4::from(a)).collect());
         let name = "cgmath";
-        run(&mut group(c, "q*q"), name, &p.qq, |(a, b)| a * b);
-        run(&mut group(c, "rotate Cvec3"), name, &p.qv, |(q, v)| {
+        run(jobs, "q*q", name, &p.qq, |(a, b)| a * b);
+        run(jobs, "rotate Cvec3", name, &p.qv, |(q, v)| {
             q.rotate_vector(v)
         });
-        run(&mut group(c, "inv"), name, &p.q, |q| q.invert());
-        run(&mut group(c, "normalize"), name, &p.q, |q| q.normalize());
-        run(&mut group(c, "slerp"), name, &p.qqa, |(a, b, t)| {
-            a.slerp(b, t)
+        run(jobs, "inv", name, &p.q, |q| q.invert());
+        run(jobs, "normalize", name, &p.q, |q| q.normalize());
+        run(jobs, "slerp", name, &p.qqa, |(a, b, t)| a.slerp(b, t));
+        run(jobs, "nlerp", name, &p.qqa, |(a, b, t)| a.nlerp(b, t));
+        run(jobs, "RigTForm * RigTForm", name, &p.tf2, |(a, b)| {
+            a.concat(&b)
         });
-        run(&mut group(c, "nlerp"), name, &p.qqa, |(a, b, t)| {
-            a.nlerp(b, t)
-        });
-        run(
-            &mut group(c, "RigTForm * RigTForm"),
-            name,
-            &p.tf2,
-            |(a, b)| a.concat(&b),
-        );
-        run(&mut group(c, "RigTForm inv"), name, &p.tf, |a| {
-            a.inverse_transform()
-        });
-        run(&mut group(c, "RigTForm * point"), name, &p.tfv, |(a, v)| {
+        run(jobs, "RigTForm inv", name, &p.tf, |a| a.inverse_transform());
+        run(jobs, "RigTForm * point", name, &p.tfv, |(a, v)| {
             a.transform_point(cgmath::Point3::from_vec(v))
         });
         run(
-            &mut group(c, "Matrix4 from RigTForm"),
+            jobs,
+            "Matrix4 from RigTForm",
             name,
             &p.tf,
             cgmath::Matrix4::from,
         );
-        run(&mut group(c, "normal_matrix"), name, &mats, |m| {
+        run(jobs, "normal_matrix", name, mats, |m| {
             let m3 = cgmath::Matrix3::from_cols(m.x.truncate(), m.y.truncate(), m.z.truncate());
             m3.invert().map(|m| m.transpose())
         });
@@ -343,12 +343,12 @@ fn quat_ops(c: &mut Criterion) {
 }
 
 fn config() -> Criterion {
-    // Short runs: 20 operations times 6 libraries. Medians over 30 samples
-    // of 1,024 calls each are stable enough for ratios on a shared machine.
+    // 16 operations, up to 6 libraries each, about 3 s per benchmark: the
+    // median of 30 samples of 1,024 calls, for ratios on a shared machine.
     Criterion::default()
         .sample_size(30)
-        .warm_up_time(Duration::from_millis(500))
-        .measurement_time(Duration::from_secs(1))
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(2))
 }
 
 criterion_group! {
