@@ -4,7 +4,7 @@
 # `<!-- perf-report:begin -->` and `<!-- perf-report:end -->` (through a
 # temporary file, renamed over README.md only when everything succeeded).
 #
-#   tools/perf-report.sh            # all of it: about 30 minutes
+#   tools/perf-report.sh            # all of it: about 10 minutes
 #
 # 1. Host: `cargo bench --bench ops` (criterion), every operation beside the
 #    peers, then rigtform again with `fast-math`; the medians per call.
@@ -82,10 +82,10 @@ cores=$(nproc)
     echo
     echo "Accuracy, default backend and peers:"
     echo
-    sed '/^<!--/d' "$out/accuracy.md"
+    sed '1,2d' "$out/accuracy.md"
     echo "Accuracy with \`fast-math\`:"
     echo
-    sed '/^<!--/d' "$out/accuracy-fast-math.md"
+    sed '1,2d' "$out/accuracy-fast-math.md"
     echo "<!-- perf-report:end -->"
 } > "$out/section.md"
 
