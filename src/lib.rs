@@ -73,7 +73,7 @@
 //! | feature | what it adds |
 //! | --- | --- |
 //! | (default) | f32-only atan2, sine and cosine kernels, each within 1 to 1.6 ulp (no f64 arithmetic, so no soft-float code on a Cortex-M4F); the FPU's square root on Arm hard-float targets; libm for the rest |
-//! | `fast-math` | `micromath` approximations instead: far less accurate (see [`accuracy`]), and no faster than the default kernels |
+//! | `fast-math` | `micromath` approximations instead: far less accurate (see [`accuracy`]), and not reliably faster than the default kernels |
 //! | `defmt` | `defmt::Format` for every public type, for logging on target |
 //! | `mint` | `From` conversions to and from `mint` types (interop with glam, nalgebra, cgmath) |
 //!
