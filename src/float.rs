@@ -321,12 +321,11 @@ fn sum_and_tail(hi: f32, lo: f32) -> (f32, f32) {
 #[must_use]
 pub(crate) fn atan2_kernel(y: f32, x: f32) -> f32 {
     let (b, a) = (y.abs(), x.abs());
-    // IEEE 754's limits, by substitution rather than a separate path: an
-    // infinite argument counts as 1 and a finite one beside it as 0, and
-    // two zeros as (0, 1). NaN stays NaN throughout.
-    let infinite = a == f32::INFINITY || b == f32::INFINITY;
-    let b = select(infinite, select(b == f32::INFINITY, 1.0, 0.0), b);
-    let a = select(infinite, select(a == f32::INFINITY, 1.0, 0.0), a);
+    // IEEE 754's limits, by substitution rather than a separate path: two
+    // infinities count as (1, 1), two zeros as (0, 1). One infinity needs
+    // nothing (the division below gives 0 for it), and NaN stays NaN.
+    let infinite = a == f32::INFINITY && b == f32::INFINITY;
+    let (b, a) = (select(infinite, 1.0, b), select(infinite, 1.0, a));
     let a = select(a == 0.0 && b == 0.0, 1.0, a);
     // The angle of (a, b) in [0, pi/2] as hi + atan(num / den) + lo: at
     // most 1/2 rad, at least pi/2 - 1/2, or between, where a and b are
