@@ -346,6 +346,39 @@ fn slerp_extrapolated_far_from_nearly_identical_inputs_is_unit() {
 }
 
 #[test]
+fn slerp_of_inputs_closer_than_f32_squares_can_tell_is_the_tiny_turn() {
+    // 1e-20 apart: the part of b orthogonal to a has squares below 2^-100,
+    // which slerp scales up by an exact power of two before taking the angle.
+    let a = Quat::IDENTITY;
+    let b = Quat::new(1.0, 1e-20, 0.0, 0.0);
+    for alpha in [0.25f32, 0.5, 1.0, 2.0] {
+        let s = a.slerp(b, alpha);
+        assert!(is_unit(s, UNIT_NORM_ERROR), "{alpha}: {s:?}");
+        assert!(s.angle_to(a) <= SLERP_MAX_ANGLE_ERROR, "{alpha}: {s:?}");
+        assert!((s.x - alpha * 1e-20).abs() <= 1e-26, "{alpha}: {s:?}");
+    }
+}
+
+#[test]
+fn slerp_of_large_non_unit_inputs_is_finite_and_scale_free() {
+    // Far off the unit precondition, but finite: slerp is scale-free like
+    // pow (a result with the norm of a), not NaN.
+    let mut draws = common::Draws::new(33);
+    for _ in 0..1_000 {
+        let (a, b) = (draws.unit_quat(), draws.unit_quat());
+        let alpha = draws.uniform(0.0, 1.0) as f32;
+        let big = |q: Quat| Quat::new(q.w * 1e12, q.x * 1e12, q.y * 1e12, q.z * 1e12);
+        let s = big(a).slerp(big(b), alpha);
+        assert!(s.is_finite(), "{a:?} {b:?} {alpha}: {s:?}");
+        let want = a.slerp(b, alpha);
+        assert!(
+            s.normalize().angle_to(want) <= 4.0 * SLERP_MAX_ANGLE_ERROR,
+            "{a:?} {b:?}"
+        );
+    }
+}
+
+#[test]
 fn slerp_of_antipodal_inputs_stays_put() {
     let a = Quat::from_axis_angle(Cvec3::new(2.0, 1.0, -1.0), 0.8);
     for alpha in [0.3f32, 1.0, 2.0] {
