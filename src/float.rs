@@ -384,6 +384,11 @@ pub(crate) fn sin_cos_kernel(x: f32) -> (f32, f32) {
 /// `a` itself, or `pi/2 - a` with sine and cosine swapped, whose head's
 /// difference is exact (Sterbenz: `a` lies within a factor 2 of `PIO2_HI`)
 /// and whose tail is kept. Within [`SIN_COS_NARROW_ULP`].
+///
+/// Inlined on 64-bit desktop targets, where the three calls of [`sin3`]
+/// then share vector instructions; elsewhere one out-of-line copy keeps
+/// flash small (a Cortex-M4F has no vector unit to gain from copies).
+#[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline(always))]
 fn sin_cos_quarter(a: f32) -> (f32, f32) {
     let swap = a > core::f32::consts::FRAC_PI_4;
     let (r, t) = if swap {
@@ -401,25 +406,25 @@ fn sin_cos_quarter(a: f32) -> (f32, f32) {
 
 /// `(sin(r + t), cos(r + t))` for `|r| <= pi/4`: both polynomials, in one
 /// function that the narrow and the reduced paths share.
+#[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline(always))]
 fn sin_cos_poly(r: f32, t: f32) -> (f32, f32) {
     (sin_poly(r, t), cos_poly(r, t))
 }
 
 /// Sines of three angles, each in [0, 3 pi/4]: the three that slerp
-/// needs, side by side (as one vector operation where the target has them),
+/// needs, side by side (on x86-64 the compiler evaluates them together in
+/// vector registers; on a Cortex-M4F they are three calls of one body),
 /// with the accuracy of [`sin_cos`] (default backend: within
 /// [`SIN_COS_NARROW_ULP`]). Arguments outside the range get no reduction:
 /// the caller guarantees the range.
 #[inline]
 #[must_use]
 pub(crate) fn sin3(a: f32, b: f32, c: f32) -> (f32, f32, f32) {
-    // A loop, not three copies: one body in flash where code size counts,
-    // unrolled and vectorized where speed does.
-    let mut x = [a, b, c];
-    for x in &mut x {
-        *x = sin_cos_quarter(*x).0;
-    }
-    (x[0], x[1], x[2])
+    (
+        sin_cos_quarter(a).0,
+        sin_cos_quarter(b).0,
+        sin_cos_quarter(c).0,
+    )
 }
 
 /// [`sin_cos_kernel`] beyond 3 pi/4, by [`reduce_by_quarter_turns`]; NaN
