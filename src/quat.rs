@@ -55,6 +55,14 @@ pub(crate) struct Polar {
     pub(crate) phi: f32,
 }
 
+/// How far the ratio of two squared norms may be from 1 for slerp to treat
+/// the inputs as unit: well above the rounding of f32 unit quaternions
+/// (a few 1e-7), well below any real drift.
+const NEARLY_UNIT: f32 = 1e-6;
+/// 2^-12 rad: below this, `sin(x) / sin(phi)` is `x / phi` to f32's
+/// precision (the two differ by less than `phi^2 / 6`, 2^-26).
+const SMALL_ANGLE: f32 = 1.0 / 4096.0;
+
 impl Quat {
     /// The identity rotation `[1, 0, 0, 0]`.
     pub const IDENTITY: Self = Self::new(1.0, 0.0, 0.0, 0.0);
@@ -417,7 +425,7 @@ impl Quat {
         (square * square).normalize()
     }
 
-    /// Spherical linear interpolation, exactly as the notes define it:
+    /// Spherical linear interpolation, as the notes define it:
     /// `cn(other * self.inv()).pow(alpha) * self`.
     ///
     /// The rotation `other * self.inv()` that takes `self` to `other` is
@@ -432,12 +440,34 @@ impl Quat {
     /// - Identical, nearly identical, antipodal (`other == -self`) and
     ///   opposite (pi apart) inputs all give finite unit results; for
     ///   rotations exactly pi apart both ways are equally short, and the sign
-    ///   of the transition quaternion's tiny `w` picks one.
+    ///   of the rounded dot product picks one.
+    ///
+    /// # How it is evaluated
+    ///
+    /// `pow(alpha) * self` of the notes traces the great circle of the unit
+    /// 4-sphere through `self` and `other`, so for `alpha` in [0, 1] it is
+    /// evaluated in that plane, without the two f32 products (each of which
+    /// rounds by up to 2.5e-7 rad): the `w` of `other * self.inv()` is
+    /// `self.dot(other)` (its sign is the `cn`), its vector part has the
+    /// length of the part of `other` orthogonal to `self`, so the notes'
+    /// `phi` is the atan2 of the two, and the result is
+    /// `(sin((1 - alpha) phi) self + sin(alpha phi) other) / sin(phi)`.
+    /// Rounding errors common to both coefficients only scale the result,
+    /// and each endpoint is reached exactly. Like `pow`, this is
+    /// scale-free: inputs a little off unit norm still give the rotation
+    /// between them. For extrapolation (where the two coefficients grow
+    /// and their rounding would show in the norm), and with the `fast-math`
+    /// feature (whose sines have absolute, not relative, errors), the notes'
+    /// formula itself is evaluated (it rounds `alpha phi`, so its error grows
+    /// with the turn).
     ///
     /// # Preconditions
     ///
-    /// `self` and `other` are unit quaternions (the result has the norm of
-    /// `self`). NaN or infinite inputs give [`Quat::NAN`].
+    /// `self` and `other` are unit quaternions, or nearly so (the result has
+    /// the norm of `self`, up to rounding). NaN or infinite inputs give
+    /// [`Quat::NAN`]. Every finite `alpha` works; beyond `f32::MAX / 4`, where
+    /// an ulp of `alpha phi` is many turns, it is taken as `f32::MAX / 4`
+    /// (still a unit rotation about the same axis).
     ///
     /// # Accuracy
     ///
@@ -462,7 +492,84 @@ impl Quat {
     /// ```
     #[must_use]
     pub fn slerp(self, other: Self, alpha: f32) -> Self {
-        (other * self.inv()).cn().pow(alpha) * self
+        // Zero times the sum of all inputs is NaN exactly when one of them
+        // is NaN or infinite, or when they are so huge that the sum
+        // overflows (where the squared norms below would overflow anyway):
+        // one test instead of nine, for flash.
+        let sum = self.w + self.x + self.y + self.z + other.w + other.x + other.y + other.z;
+        if ((sum + alpha) * 0.0).is_nan() {
+            return Self::NAN;
+        }
+        // The w of other * self.inv(); cn flips other when it is negative
+        // (multiplying by the sign, exactly, rather than branching on it).
+        let dot = self.dot(other);
+        let flip = 1.0f32.copysign(dot);
+        let other = Self::new(
+            other.w * flip,
+            other.x * flip,
+            other.y * flip,
+            other.z * flip,
+        );
+        let dot = dot * flip;
+        // The part of other orthogonal to self, times |self|^2 (exactly
+        // orthogonal for any norm of self, in exact arithmetic), scaled by
+        // a power of two if its squares would underflow.
+        let n2 = self.norm_squared();
+        let u = scale_for_squares(other.weighted_sum(n2, self, -dot).to_array());
+        if u.sum == 0.0 || alpha == 0.0 {
+            // Identical or antipodal (or a zero input): the transition is
+            // the identity, and so is its every power. And alpha = 0.
+            return self;
+        }
+        // |u| = |self|^2 |other| sin(phi) and |self| dot = |self|^2 |other|
+        // cos(phi), both times u.scale: the notes' phi in [0, pi/2].
+        let n = float::sqrt(n2);
+        let phi = float::atan2(float::sqrt(u.sum), n * dot * u.scale);
+        // Extrapolating (where the two coefficients below would grow and
+        // their rounding show in the norm), and with fast-math (whose sines
+        // are off by about 1e-3 absolute, too much to divide by a small
+        // sin(phi)): the point at angle alpha phi on the circle through self
+        // in the direction of u, made orthogonal to self once more (its
+        // rounding leaves a component along self of an ulp over |u|, a lot
+        // when self and other are nearly the same), then normalized.
+        if cfg!(feature = "fast-math") || !(0.0..=1.0).contains(&alpha) {
+            let [w, x, y, z] = u.v;
+            let dir = Self::new(w, x, y, z);
+            let dir = dir.weighted_sum(1.0, self, -dir.dot(self) / n2);
+            let k = 1.0 / float::sqrt(dir.norm_squared());
+            let dir = Self::new(dir.w * k, dir.x * k, dir.y * k, dir.z * k);
+            // |alpha| <= f32::MAX / 4 and phi <= pi/2 keep alpha * phi
+            // finite. Beyond, an ulp of alpha phi is far more than a turn
+            // (any angle is as right as any other), so alpha is clamped.
+            let alpha = alpha.clamp(-f32::MAX / 4.0, f32::MAX / 4.0);
+            let (s, c) = float::sin_cos(alpha * phi);
+            return self.weighted_sum(c, dir, s * n);
+        }
+        // alpha phi and (1 - alpha) phi add up to phi exactly where f32
+        // allows (Sterbenz), so that the result stays on the arc.
+        let far = alpha * phi;
+        let near = phi - far;
+        let (c0, c1) = if phi > SMALL_ANGLE {
+            // near, far and phi lie in [0, pi/2]. The rounding error of
+            // 1 / sin(phi) is common to both coefficients: it changes the
+            // norm, not the rotation.
+            let (s0, s1, sin_phi) = float::sin3(near, far, phi);
+            let r = 1.0 / sin_phi;
+            (s0 * r, s1 * r)
+        } else {
+            // sin(x) / sin(phi) is x / phi within 2^-26 here.
+            (near / phi, far / phi)
+        };
+        // For inputs off unit norm, other / |other| * |self| is the endpoint
+        // on self's sphere. Within rounding of unit norm the factor is taken
+        // as 1: computed, it would be off by as much as it corrects.
+        let on2 = other.norm_squared();
+        let c1 = if (n2 - on2).abs() > NEARLY_UNIT * on2 {
+            c1 * float::sqrt(n2 / on2)
+        } else {
+            c1
+        };
+        self.weighted_sum(c0, other, c1)
     }
 
     /// Normalized linear interpolation: aligns the sign of `other` with
@@ -621,6 +728,48 @@ impl Quat {
     #[must_use]
     pub fn angle_to(self, other: Self) -> f32 {
         (other * self.inv()).to_axis_angle().1
+    }
+
+    /// The Hamilton product `self * other`, pulled back towards unit norm by
+    /// one Newton step for `1 / sqrt(n)`, `n` being the product's squared
+    /// norm: the product times `(3 - n) / 2`. No square root, no division.
+    ///
+    /// For long integration chains (a gyro integrator multiplying millions
+    /// of small rotations): plain products let the rounding errors of the
+    /// norm add up, while here a norm of `1 + e` comes out as `1 - 3 e^2 / 8`
+    /// plus one rounding, so the drift cannot accumulate.
+    ///
+    /// # Preconditions
+    ///
+    /// `self` and `other` are unit quaternions, or nearly so (the step
+    /// converges towards 1 for squared norms in (0, 3), and fastest near 1).
+    /// NaN or infinite input gives a NaN or infinite result.
+    ///
+    /// # Accuracy
+    ///
+    /// The rotation is that of `self * other` (the scale does not change it);
+    /// the norm stays within
+    /// [`accuracy::RENORMALIZED_CHAIN_NORM_ERROR`](crate::accuracy::RENORMALIZED_CHAIN_NORM_ERROR)
+    /// of 1 over a chain of 1,000,000 products
+    /// (`renormalized_product_chain_stays_unit` in `tests/edge_cases.rs`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let step = Quat::from_rotation_z(1e-3).mul_renormalized(Quat::from_rotation_x(2e-3));
+    /// let mut q = Quat::IDENTITY;
+    /// for _ in 0..100_000 {
+    ///     q = q.mul_renormalized(step);
+    /// }
+    /// assert!((q.norm() - 1.0).abs() < 1e-6);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn mul_renormalized(self, other: Self) -> Self {
+        let p = self * other;
+        let s = (3.0 - p.norm_squared()) * 0.5;
+        Self::new(p.w * s, p.x * s, p.y * s, p.z * s)
     }
 }
 

@@ -8,7 +8,8 @@ use common::{edge_quats, finite_edges};
 use core::f32::consts::PI;
 use rand::{Rng, SeedableRng};
 use rigtform::accuracy::{
-    MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, SLERP_MAX_ANGLE_ERROR, UNIT_NORM_ERROR,
+    MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, RENORMALIZED_CHAIN_NORM_ERROR,
+    SLERP_MAX_ANGLE_ERROR, UNIT_NORM_ERROR,
 };
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 
@@ -326,6 +327,58 @@ fn slerp_of_identical_nearly_identical_antipodal_and_opposite_rotations() {
 }
 
 #[test]
+fn slerp_extrapolated_far_from_nearly_identical_inputs_is_unit() {
+    // The direction of travel of inputs 1e-6 rad apart is known only
+    // roughly; far out it must still give a unit result.
+    let mut draws = common::Draws::new(32);
+    for _ in 0..10_000 {
+        let a = draws.unit_quat();
+        let axis = draws.unit_vec64();
+        let axis = Cvec3::new(axis.x as f32, axis.y as f32, axis.z as f32);
+        for apart in [1e-6f32, 1e-4, 1e-2] {
+            let b = Quat::from_axis_angle(axis, apart) * a;
+            for alpha in [-3.0f32, 7.0, 1e6, -1e30, f32::MAX] {
+                let s = a.slerp(b, alpha);
+                assert!(is_unit(s, UNIT_NORM_ERROR), "{a:?} {b:?} {alpha}: {s:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn slerp_of_inputs_closer_than_f32_squares_can_tell_is_the_tiny_turn() {
+    // 1e-20 apart: the part of b orthogonal to a has squares below 2^-100,
+    // which slerp scales up by an exact power of two before taking the angle.
+    let a = Quat::IDENTITY;
+    let b = Quat::new(1.0, 1e-20, 0.0, 0.0);
+    for alpha in [0.25f32, 0.5, 1.0, 2.0] {
+        let s = a.slerp(b, alpha);
+        assert!(is_unit(s, UNIT_NORM_ERROR), "{alpha}: {s:?}");
+        assert!(s.angle_to(a) <= SLERP_MAX_ANGLE_ERROR, "{alpha}: {s:?}");
+        assert!((s.x - alpha * 1e-20).abs() <= 1e-26, "{alpha}: {s:?}");
+    }
+}
+
+#[test]
+fn slerp_of_large_non_unit_inputs_is_finite_and_scale_free() {
+    // Far off the unit precondition, but finite: slerp is scale-free like
+    // pow (a result with the norm of a), not NaN.
+    let mut draws = common::Draws::new(33);
+    for _ in 0..1_000 {
+        let (a, b) = (draws.unit_quat(), draws.unit_quat());
+        let alpha = draws.uniform(0.0, 1.0) as f32;
+        let big = |q: Quat| Quat::new(q.w * 1e12, q.x * 1e12, q.y * 1e12, q.z * 1e12);
+        let s = big(a).slerp(big(b), alpha);
+        assert!(s.is_finite(), "{a:?} {b:?} {alpha}: {s:?}");
+        let want = a.slerp(b, alpha);
+        assert!(
+            s.normalize().angle_to(want) <= 4.0 * SLERP_MAX_ANGLE_ERROR,
+            "{a:?} {b:?}"
+        );
+    }
+}
+
+#[test]
 fn slerp_of_antipodal_inputs_stays_put() {
     let a = Quat::from_axis_angle(Cvec3::new(2.0, 1.0, -1.0), 0.8);
     for alpha in [0.3f32, 1.0, 2.0] {
@@ -358,4 +411,51 @@ fn normalize_works_from_subnormal_to_max() {
             None => assert_eq!(q, Quat::new(0.0, 0.0, 0.0, 0.0)),
         }
     }
+}
+
+#[test]
+fn renormalized_product_chain_stays_unit() {
+    // A gyro integrator's chain: a million products of small random
+    // rotations (up to 0.1 rad each, from a fixed pool of 1,000).
+    let mut draws = common::Draws::new(30);
+    let steps: Vec<Quat> = (0..1000)
+        .map(|_| {
+            let axis = draws.unit_vec64();
+            let axis = Cvec3::new(axis.x as f32, axis.y as f32, axis.z as f32);
+            // Normalized: unit to an ulp with either backend (fast-math's
+            // sines leave from_axis_angle 1e-3 off unit).
+            Quat::from_axis_angle(axis, draws.uniform(0.0, 0.1) as f32).normalize()
+        })
+        .collect();
+    let (mut plain, mut renormalized) = (Quat::IDENTITY, Quat::IDENTITY);
+    let (mut plain_drift, mut worst) = (0.0f32, 0.0f32);
+    for i in 0..1_000_000 {
+        let step = steps[i % steps.len()];
+        plain = plain * step;
+        renormalized = renormalized.mul_renormalized(step);
+        plain_drift = plain_drift.max((plain.norm() - 1.0).abs());
+        worst = worst.max((renormalized.norm() - 1.0).abs());
+    }
+    println!("1000000 products: plain drift {plain_drift:.3e}, renormalized {worst:.3e}");
+    assert!(worst <= RENORMALIZED_CHAIN_NORM_ERROR, "{worst}");
+}
+
+#[test]
+fn renormalized_product_is_the_same_rotation_as_the_plain_one() {
+    let mut draws = common::Draws::new(31);
+    for _ in 0..10_000 {
+        let (a, b) = (draws.unit_quat(), draws.unit_quat());
+        let (plain, renormalized) = (a * b, a.mul_renormalized(b));
+        assert!(
+            renormalized.angle_to(plain) <= MUL_MAX_ANGLE_ERROR,
+            "{a:?} {b:?}"
+        );
+        assert!(is_unit(renormalized, UNIT_NORM_ERROR), "{a:?} {b:?}");
+    }
+    // A drifted input comes back to unit in one step: a norm of 1 + e
+    // becomes 1 - 3 e^2 / 2 (1.5e-8 here), plus rounding.
+    let drifted = Quat::new(0.0, 0.0, 1.0 + 1e-4, 0.0);
+    let n = drifted.mul_renormalized(Quat::IDENTITY).norm();
+    assert!((n - 1.0).abs() <= UNIT_NORM_ERROR, "{n}");
+    assert!(is_nan_quat(Quat::NAN.mul_renormalized(Quat::IDENTITY)));
 }

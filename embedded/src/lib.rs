@@ -5,6 +5,8 @@
 #![no_std]
 
 pub mod attitude;
+#[cfg(feature = "peers")]
+pub mod ops;
 
 use cortex_m_semihosting::{debug, hprintln};
 use rigtform_proofs::laws::Violation;

@@ -1,0 +1,359 @@
+//! Every public operation of rigtform, timed in the same run as the same
+//! operation of glam (its default SIMD build and its `scalar-math` build),
+//! nalgebra, micromath and cgmath, where each has it, on the same
+//! pre-generated inputs.
+//!
+//! Each benchmark runs the operation over 1,024 inputs per iteration: the
+//! input slice is hidden behind `black_box` (nothing is known about it at
+//! compile time) and so is every result (nothing is vectorized across
+//! inputs or left out); criterion reports the time per iteration, and the
+//! README's table divides its median by 1,024.
+//!
+//! `cargo bench --bench ops` runs them all, operation by operation;
+//! `cargo bench --bench ops -- slerp` only the slerp group.
+
+#[path = "inputs.rs"]
+mod inputs;
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{criterion_group, criterion_main, BenchmarkGroup, Criterion, Throughput};
+use inputs::*;
+use rigtform::{Cvec4, Matrix4, Quat, RigTForm};
+
+/// Inputs per iteration.
+const N: usize = 1024;
+
+type Group<'a> = BenchmarkGroup<'a, criterion::measurement::WallTime>;
+
+/// One benchmark, to be run later: every library's benchmarks are set up
+/// first and then run operation by operation, so that a burst of load from
+/// elsewhere on the machine hits the libraries of one operation alike.
+type Job = (&'static str, Box<dyn Fn(&mut Criterion)>);
+
+/// Adds the benchmark of `f` over every element of `inputs` (converted
+/// beforehand, outside the timing) to `jobs`.
+fn run<I: Copy + 'static, O>(
+    jobs: &mut Vec<Job>,
+    op: &'static str,
+    library: &'static str,
+    inputs: &'static [I],
+    f: impl Fn(I) -> O + 'static,
+) {
+    let job = move |c: &mut Criterion| {
+        group(c, op).bench_function(library, |b| {
+            b.iter(|| {
+                for &x in black_box(inputs) {
+                    black_box(f(x));
+                }
+            })
+        });
+    };
+    jobs.push((op, Box::new(job)));
+}
+
+/// `value`, kept for the rest of the process (the jobs refer to it).
+fn keep<T>(value: T) -> &'static T {
+    Box::leak(Box::new(value))
+}
+
+fn group<'a>(c: &'a mut Criterion, name: &str) -> Group<'a> {
+    let mut g = c.benchmark_group(name);
+    g.throughput(Throughput::Elements(N as u64));
+    g
+}
+
+/// The shared inputs in one library's types: quaternions `Q`, vectors `V`
+/// and rigid body transforms `T` (whatever the library has for them).
+struct Prepared<Q, V, T> {
+    q: Vec<Q>,
+    qq: Vec<(Q, Q)>,
+    qv: Vec<(Q, V)>,
+    qa: Vec<(Q, f32)>,
+    qqa: Vec<(Q, Q, f32)>,
+    tf: Vec<T>,
+    tf2: Vec<(T, T)>,
+    tfv: Vec<(T, V)>,
+    tfa: Vec<(T, T, f32)>,
+}
+
+impl<Q: Copy, V: Copy, T: Copy> Prepared<Q, V, T> {
+    fn new(
+        inp: &Inputs,
+        quat: impl Fn([f32; 4]) -> Q,
+        vec: impl Fn([f32; 3]) -> V,
+        tform: impl Fn([f32; 3], [f32; 4]) -> T,
+    ) -> Self {
+        let q: Vec<Q> = inp.a.iter().map(|&a| quat(a)).collect();
+        let b: Vec<Q> = inp.b.iter().map(|&b| quat(b)).collect();
+        let tf: Vec<T> = inp
+            .v
+            .iter()
+            .zip(&inp.a)
+            .map(|(&t, &r)| tform(t, r))
+            .collect();
+        let tf_b: Vec<T> = inp
+            .u
+            .iter()
+            .zip(&inp.b)
+            .map(|(&t, &r)| tform(t, r))
+            .collect();
+        let v: Vec<V> = inp.v.iter().map(|&v| vec(v)).collect();
+        let u: Vec<V> = inp.u.iter().map(|&u| vec(u)).collect();
+        let t = &inp.alpha;
+        Self {
+            qq: q.iter().zip(&b).map(|(&a, &b)| (a, b)).collect(),
+            qv: q.iter().zip(&v).map(|(&a, &v)| (a, v)).collect(),
+            qa: q.iter().zip(t).map(|(&a, &t)| (a, t)).collect(),
+            qqa: (0..N).map(|i| (q[i], b[i], t[i])).collect(),
+            tf2: tf.iter().zip(&tf_b).map(|(&a, &b)| (a, b)).collect(),
+            tfv: tf.iter().zip(&u).map(|(&a, &u)| (a, u)).collect(),
+            tfa: (0..N).map(|i| (tf[i], tf_b[i], t[i])).collect(),
+            q,
+            tf,
+        }
+    }
+}
+
+/// The glam benchmarks, for both of its builds (same API, different crate).
+/// A rigid body transform is what glam users write for one: a
+/// (translation, rotation) pair.
+macro_rules! glam_benches {
+    ($c:ident, $inp:ident, $glam:ident, $name:expr, $quat:ident, $vec:ident) => {{
+        let p = keep(Prepared::new($inp, $quat, $vec, |t, r| ($vec(t), $quat(r))));
+        let mats: &'static [_] = keep::<Vec<_>>(
+            p.tf.iter()
+                .map(|&(t, r)| $glam::Mat4::from_rotation_translation(r, t))
+                .collect(),
+        );
+        let name = $name;
+        run($c, "q*q", name, &p.qq, |(a, b)| a * b);
+        run($c, "rotate Cvec3", name, &p.qv, |(q, v)| q * v);
+        run($c, "inv", name, &p.q, |q| q.inverse());
+        run($c, "normalize", name, &p.q, |q| q.normalize());
+        run($c, "slerp", name, &p.qqa, |(a, b, t)| a.slerp(b, t));
+        run($c, "nlerp", name, &p.qqa, |(a, b, t)| a.lerp(b, t));
+        run(
+            $c,
+            "RigTForm * RigTForm",
+            name,
+            &p.tf2,
+            |((t1, r1), (t2, r2))| (t1 + r1 * t2, r1 * r2),
+        );
+        run($c, "RigTForm inv", name, &p.tf, |(t, r)| {
+            let ri = r.inverse();
+            (-(ri * t), ri)
+        });
+        run($c, "RigTForm * point", name, &p.tfv, |((t, r), v)| {
+            r * v + t
+        });
+        run(
+            $c,
+            "RigTForm interpolate",
+            name,
+            &p.tfa,
+            |((t1, r1), (t2, r2), a)| (t1.lerp(t2, a), r1.slerp(r2, a)),
+        );
+        run($c, "Matrix4 from RigTForm", name, &p.tf, |(t, r)| {
+            $glam::Mat4::from_rotation_translation(r, t)
+        });
+        run($c, "normal_matrix", name, mats, |m| {
+            $glam::Mat3::from_mat4(m).inverse().transpose()
+        });
+    }};
+}
+
+fn quat_ops(c: &mut Criterion) {
+    let inp = Inputs::new(N, 1);
+    let jobs = &mut Vec::new();
+
+    // rigtform, under the name of its backend.
+    {
+        let p = keep(Prepared::new(&inp, rig_quat, rig_vec, rig_tform));
+        let qc: &'static [_] = keep::<Vec<_>>(
+            p.qv.iter()
+                .map(|&(q, v)| (q, Cvec4::from_point(v)))
+                .collect(),
+        );
+        let tfc: &'static [_] = keep::<Vec<_>>(
+            p.tfv
+                .iter()
+                .map(|&(a, v)| (a, Cvec4::from_point(v)))
+                .collect(),
+        );
+        let blend4: &'static [_] = keep::<Vec<_>>(
+            (0..N)
+                .map(|i| {
+                    let (a, b, t) = p.qqa[i];
+                    let (c, d, _) = p.qqa[(i + 1) % N];
+                    [(a, 1.0 - t), (b, t), (c, 0.5), (d, 0.25)]
+                })
+                .collect(),
+        );
+        let mats: &'static [_] = keep::<Vec<_>>(p.tf.iter().map(|&a| Matrix4::from(a)).collect());
+        let name = if cfg!(feature = "fast-math") {
+            "rigtform (fast-math)"
+        } else {
+            "rigtform"
+        };
+
+        run(jobs, "q*q", name, &p.qq, |(a, b)| a * b);
+        run(jobs, "q*q renormalized", name, &p.qq, |(a, b)| {
+            a.mul_renormalized(b)
+        });
+        run(jobs, "rotate Cvec3", name, &p.qv, |(q, v)| q * v);
+        run(jobs, "rotate Cvec4", name, qc, |(q, v)| q * v);
+        run(jobs, "inv", name, &p.q, Quat::inv);
+        run(jobs, "normalize", name, &p.q, Quat::normalize);
+        run(jobs, "pow", name, &p.qa, |(q, t)| q.pow(t));
+        run(jobs, "slerp", name, &p.qqa, |(a, b, t)| a.slerp(b, t));
+        run(jobs, "nlerp", name, &p.qqa, |(a, b, t)| a.nlerp(b, t));
+        run(jobs, "blend of 4", name, blend4, |e| Quat::blend(&e));
+        run(jobs, "RigTForm * RigTForm", name, &p.tf2, |(a, b)| a * b);
+        run(jobs, "RigTForm inv", name, &p.tf, RigTForm::inv);
+        run(jobs, "RigTForm * point", name, tfc, |(a, p)| a * p);
+        run(jobs, "RigTForm interpolate", name, &p.tfa, |(a, b, t)| {
+            a.interpolate(b, t)
+        });
+        run(jobs, "Matrix4 from RigTForm", name, &p.tf, Matrix4::from);
+        run(jobs, "normal_matrix", name, mats, Matrix4::normal_matrix);
+    }
+    // With fast-math only rigtform is measured again (the peers do not change).
+    if !cfg!(feature = "fast-math") {
+        peers(jobs, &inp);
+    }
+    // Operation by operation, in the order of the README's table (a stable
+    // sort keeps rigtform first within each).
+    jobs.sort_by_key(|&(op, _)| OPS.iter().position(|&o| o == op));
+    for (_, job) in jobs.iter() {
+        job(c);
+    }
+}
+
+/// The operations, in the order they are run and tabulated.
+const OPS: [&str; 16] = [
+    "q*q",
+    "q*q renormalized",
+    "rotate Cvec3",
+    "rotate Cvec4",
+    "inv",
+    "normalize",
+    "pow",
+    "slerp",
+    "nlerp",
+    "blend of 4",
+    "RigTForm * RigTForm",
+    "RigTForm inv",
+    "RigTForm * point",
+    "RigTForm interpolate",
+    "Matrix4 from RigTForm",
+    "normal_matrix",
+];
+
+/// The peers' benchmarks.
+fn peers(jobs: &mut Vec<Job>, inp: &Inputs) {
+    glam_benches!(jobs, inp, glam, "glam (SIMD)", glam_quat, glam_vec);
+    glam_benches!(
+        jobs,
+        inp,
+        glam_scalar,
+        "glam (scalar-math)",
+        glam_scalar_quat,
+        glam_scalar_vec
+    );
+
+    // nalgebra: UnitQuaternion and Isometry3, f32.
+    {
+        let p = keep(Prepared::new(inp, na_quat, na_vec, na_iso));
+        let mats: &'static [_] = keep::<Vec<_>>(p.tf.iter().map(|a| a.to_homogeneous()).collect());
+        let name = "nalgebra";
+        run(jobs, "q*q", name, &p.qq, |(a, b)| a * b);
+        run(jobs, "rotate Cvec3", name, &p.qv, |(q, v)| q * v);
+        run(jobs, "inv", name, &p.q, |q| q.inverse());
+        run(jobs, "normalize", name, &p.q, |q| {
+            q.into_inner().normalize()
+        });
+        run(jobs, "pow", name, &p.qa, |(q, t)| q.powf(t));
+        run(jobs, "slerp", name, &p.qqa, |(a, b, t)| a.slerp(&b, t));
+        run(jobs, "nlerp", name, &p.qqa, |(a, b, t)| a.nlerp(&b, t));
+        run(jobs, "RigTForm * RigTForm", name, &p.tf2, |(a, b)| a * b);
+        run(jobs, "RigTForm inv", name, &p.tf, |a| a.inverse());
+        run(jobs, "RigTForm * point", name, &p.tfv, |(a, v)| {
+            a * nalgebra::Point3::from(v)
+        });
+        run(jobs, "RigTForm interpolate", name, &p.tfa, |(a, b, t)| {
+            a.lerp_slerp(&b, t)
+        });
+        run(jobs, "Matrix4 from RigTForm", name, &p.tf, |a| {
+            a.to_homogeneous()
+        });
+        run(jobs, "normal_matrix", name, mats, |m| {
+            m.fixed_view::<3, 3>(0, 0)
+                .into_owned()
+                .try_inverse()
+                .map(|m| m.transpose())
+        });
+    }
+
+    // micromath: Quaternion (no slerp, pow or transforms).
+    {
+        let p = keep(Prepared::new(inp, mm_quat, mm_vec, |_, _| ()));
+        let name = "micromath";
+        run(jobs, "q*q", name, &p.qq, |(a, b)| a * b);
+        run(jobs, "rotate Cvec3", name, &p.qv, |(q, v)| q.rotate(v));
+        run(jobs, "inv", name, &p.q, |q| q.conj());
+        run(jobs, "normalize", name, &p.q, |q| q.normalize());
+    }
+
+    // cgmath: Quaternion and Decomposed (no pow, no interpolation of transforms).
+    {
+        use cgmath::{EuclideanSpace, InnerSpace, Matrix, Rotation, SquareMatrix, Transform};
+        let p = keep(Prepared::new(inp, cg_quat, cg_vec, cg_decomposed));
+        let mats: &'static [_] =
+            keep::<Vec<_>>(p.tf.iter().map(|&a| cgmath::Matrix4::from(a)).collect());
+        let name = "cgmath";
+        run(jobs, "q*q", name, &p.qq, |(a, b)| a * b);
+        run(jobs, "rotate Cvec3", name, &p.qv, |(q, v)| {
+            q.rotate_vector(v)
+        });
+        run(jobs, "inv", name, &p.q, |q| q.invert());
+        run(jobs, "normalize", name, &p.q, |q| q.normalize());
+        run(jobs, "slerp", name, &p.qqa, |(a, b, t)| a.slerp(b, t));
+        run(jobs, "nlerp", name, &p.qqa, |(a, b, t)| a.nlerp(b, t));
+        run(jobs, "RigTForm * RigTForm", name, &p.tf2, |(a, b)| {
+            a.concat(&b)
+        });
+        run(jobs, "RigTForm inv", name, &p.tf, |a| a.inverse_transform());
+        run(jobs, "RigTForm * point", name, &p.tfv, |(a, v)| {
+            a.transform_point(cgmath::Point3::from_vec(v))
+        });
+        run(
+            jobs,
+            "Matrix4 from RigTForm",
+            name,
+            &p.tf,
+            cgmath::Matrix4::from,
+        );
+        run(jobs, "normal_matrix", name, mats, |m| {
+            let m3 = cgmath::Matrix3::from_cols(m.x.truncate(), m.y.truncate(), m.z.truncate());
+            m3.invert().map(|m| m.transpose())
+        });
+    }
+}
+
+fn config() -> Criterion {
+    // 16 operations, up to 6 libraries each, about 3 s per benchmark: the
+    // median of 30 samples of 1,024 calls, for ratios on a shared machine.
+    Criterion::default()
+        .sample_size(30)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(2))
+}
+
+criterion_group! {
+    name = benches;
+    config = config();
+    targets = quat_ops
+}
+criterion_main!(benches);

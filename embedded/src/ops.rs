@@ -1,0 +1,242 @@
+//! The operations that `bin/bench.rs` counts instructions of and
+//! `bin/size.rs` measures the flash of: rigtform's, and the same operation
+//! of glam (built with libm), nalgebra (libm) and micromath, where each has
+//! it. Every operation has one signature, so that the bench can walk a
+//! table and the size binary can name one.
+
+use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+
+/// The inputs of every operation: two unit quaternions, two vectors (also
+/// the translations of two rigid body transforms) and a parameter in [0, 1].
+#[derive(Clone, Copy, Debug)]
+pub struct Input {
+    /// First unit quaternion, `[w, x, y, z]`.
+    pub a: [f32; 4],
+    /// Second unit quaternion.
+    pub b: [f32; 4],
+    /// First vector.
+    pub u: [f32; 3],
+    /// Second vector.
+    pub v: [f32; 3],
+    /// Interpolation parameter.
+    pub t: f32,
+}
+
+/// Room for any result (a quaternion, a vector, a transform, a matrix);
+/// each operation writes only the entries its result needs.
+pub type Output = [f32; 16];
+
+/// One operation of one library: reads the input, writes the result.
+pub type Op = fn(&Input, &mut Output);
+
+fn put(o: &mut Output, r: &[f32]) {
+    for (slot, &x) in o.iter_mut().zip(r) {
+        *slot = x;
+    }
+}
+
+fn quat(q: [f32; 4]) -> Quat {
+    Quat::new(q[0], q[1], q[2], q[3])
+}
+fn vec3(v: [f32; 3]) -> Cvec3 {
+    Cvec3::new(v[0], v[1], v[2])
+}
+fn rig(x: &Input) -> (RigTForm, RigTForm) {
+    (
+        RigTForm::new(vec3(x.u), quat(x.a)),
+        RigTForm::new(vec3(x.v), quat(x.b)),
+    )
+}
+fn rig_out(o: &mut Output, r: RigTForm) {
+    put(o, &[r.t.x, r.t.y, r.t.z, r.r.w, r.r.x, r.r.y, r.r.z]);
+}
+fn q_out(o: &mut Output, q: Quat) {
+    put(o, &[q.w, q.x, q.y, q.z]);
+}
+
+/// The calibration: no operation, the input's first quaternion copied out.
+pub fn empty(x: &Input, o: &mut Output) {
+    put(o, &x.a);
+}
+
+pub fn rigtform_mul(x: &Input, o: &mut Output) {
+    q_out(o, quat(x.a) * quat(x.b));
+}
+pub fn rigtform_rotate(x: &Input, o: &mut Output) {
+    let v = quat(x.a) * vec3(x.u);
+    put(o, &[v.x, v.y, v.z]);
+}
+pub fn rigtform_normalize(x: &Input, o: &mut Output) {
+    q_out(o, quat(x.a).normalize());
+}
+pub fn rigtform_pow(x: &Input, o: &mut Output) {
+    q_out(o, quat(x.a).pow(x.t));
+}
+pub fn rigtform_slerp(x: &Input, o: &mut Output) {
+    q_out(o, quat(x.a).slerp(quat(x.b), x.t));
+}
+pub fn rigtform_nlerp(x: &Input, o: &mut Output) {
+    q_out(o, quat(x.a).nlerp(quat(x.b), x.t));
+}
+pub fn rigtform_mul_renormalized(x: &Input, o: &mut Output) {
+    q_out(o, quat(x.a).mul_renormalized(quat(x.b)));
+}
+pub fn rigtform_rig_mul(x: &Input, o: &mut Output) {
+    let (a, b) = rig(x);
+    rig_out(o, a * b);
+}
+pub fn rigtform_rig_inv(x: &Input, o: &mut Output) {
+    rig_out(o, rig(x).0.inv());
+}
+pub fn rigtform_rig_apply(x: &Input, o: &mut Output) {
+    let p = rig(x).0 * Cvec4::from_point(vec3(x.v));
+    put(o, &[p.x, p.y, p.z, p.w]);
+}
+pub fn rigtform_interpolate(x: &Input, o: &mut Output) {
+    let (a, b) = rig(x);
+    rig_out(o, a.interpolate(b, x.t));
+}
+pub fn rigtform_matrix(x: &Input, o: &mut Output) {
+    put(o, &Matrix4::from(rig(x).0).to_cols_array());
+}
+
+fn glam_quat(q: [f32; 4]) -> glam::Quat {
+    glam::Quat::from_xyzw(q[1], q[2], q[3], q[0])
+}
+fn glam_out(o: &mut Output, q: glam::Quat) {
+    put(o, &[q.w, q.x, q.y, q.z]);
+}
+pub fn glam_mul(x: &Input, o: &mut Output) {
+    glam_out(o, glam_quat(x.a) * glam_quat(x.b));
+}
+pub fn glam_rotate(x: &Input, o: &mut Output) {
+    let v = glam_quat(x.a) * glam::Vec3::from_array(x.u);
+    put(o, &[v.x, v.y, v.z]);
+}
+pub fn glam_normalize(x: &Input, o: &mut Output) {
+    glam_out(o, glam_quat(x.a).normalize());
+}
+pub fn glam_slerp(x: &Input, o: &mut Output) {
+    glam_out(o, glam_quat(x.a).slerp(glam_quat(x.b), x.t));
+}
+pub fn glam_nlerp(x: &Input, o: &mut Output) {
+    glam_out(o, glam_quat(x.a).lerp(glam_quat(x.b), x.t));
+}
+/// A rigid body transform as glam users write it: (translation, rotation).
+pub fn glam_interpolate(x: &Input, o: &mut Output) {
+    let (t0, t1) = (glam::Vec3::from_array(x.u), glam::Vec3::from_array(x.v));
+    let (r0, r1) = (glam_quat(x.a), glam_quat(x.b));
+    let (t, r) = (t0.lerp(t1, x.t), r0.slerp(r1, x.t));
+    put(o, &[t.x, t.y, t.z, r.w, r.x, r.y, r.z]);
+}
+pub fn glam_matrix(x: &Input, o: &mut Output) {
+    let m = glam::Mat4::from_rotation_translation(glam_quat(x.a), glam::Vec3::from_array(x.u));
+    put(o, &m.to_cols_array());
+}
+
+fn na_quat(q: [f32; 4]) -> nalgebra::UnitQuaternion<f32> {
+    nalgebra::UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(q[0], q[1], q[2], q[3]))
+}
+fn na_out(o: &mut Output, q: nalgebra::UnitQuaternion<f32>) {
+    put(o, &[q.w, q.i, q.j, q.k]);
+}
+fn na_iso(t: [f32; 3], r: [f32; 4]) -> nalgebra::Isometry3<f32> {
+    nalgebra::Isometry3::from_parts(nalgebra::Translation3::new(t[0], t[1], t[2]), na_quat(r))
+}
+fn na_iso_out(o: &mut Output, a: nalgebra::Isometry3<f32>) {
+    let (t, r) = (a.translation.vector, a.rotation);
+    put(o, &[t.x, t.y, t.z, r.w, r.i, r.j, r.k]);
+}
+pub fn nalgebra_mul(x: &Input, o: &mut Output) {
+    na_out(o, na_quat(x.a) * na_quat(x.b));
+}
+pub fn nalgebra_rotate(x: &Input, o: &mut Output) {
+    let v = na_quat(x.a) * nalgebra::Vector3::new(x.u[0], x.u[1], x.u[2]);
+    put(o, &[v.x, v.y, v.z]);
+}
+pub fn nalgebra_normalize(x: &Input, o: &mut Output) {
+    let q = na_quat(x.a).into_inner().normalize();
+    put(o, &[q.w, q.i, q.j, q.k]);
+}
+pub fn nalgebra_pow(x: &Input, o: &mut Output) {
+    na_out(o, na_quat(x.a).powf(x.t));
+}
+pub fn nalgebra_slerp(x: &Input, o: &mut Output) {
+    na_out(o, na_quat(x.a).slerp(&na_quat(x.b), x.t));
+}
+pub fn nalgebra_nlerp(x: &Input, o: &mut Output) {
+    na_out(o, na_quat(x.a).nlerp(&na_quat(x.b), x.t));
+}
+pub fn nalgebra_rig_mul(x: &Input, o: &mut Output) {
+    na_iso_out(o, na_iso(x.u, x.a) * na_iso(x.v, x.b));
+}
+pub fn nalgebra_rig_inv(x: &Input, o: &mut Output) {
+    na_iso_out(o, na_iso(x.u, x.a).inverse());
+}
+pub fn nalgebra_rig_apply(x: &Input, o: &mut Output) {
+    let p = na_iso(x.u, x.a) * nalgebra::Point3::new(x.v[0], x.v[1], x.v[2]);
+    put(o, &[p.x, p.y, p.z, 1.0]);
+}
+pub fn nalgebra_interpolate(x: &Input, o: &mut Output) {
+    na_iso_out(o, na_iso(x.u, x.a).lerp_slerp(&na_iso(x.v, x.b), x.t));
+}
+pub fn nalgebra_matrix(x: &Input, o: &mut Output) {
+    put(o, na_iso(x.u, x.a).to_homogeneous().as_slice());
+}
+
+fn mm_quat(q: [f32; 4]) -> micromath::Quaternion {
+    micromath::Quaternion::new(q[0], q[1], q[2], q[3])
+}
+pub fn micromath_mul(x: &Input, o: &mut Output) {
+    put(o, &(mm_quat(x.a) * mm_quat(x.b)).to_array());
+}
+pub fn micromath_rotate(x: &Input, o: &mut Output) {
+    let v = mm_quat(x.a).rotate(micromath::vector::F32x3 {
+        x: x.u[0],
+        y: x.u[1],
+        z: x.u[2],
+    });
+    put(o, &[v.x, v.y, v.z]);
+}
+pub fn micromath_normalize(x: &Input, o: &mut Output) {
+    put(o, &mm_quat(x.a).normalize().to_array());
+}
+
+/// Every operation: (operation, library, function). `bin/size.rs` names
+/// the functions; `bin/bench.rs` walks this table in order, and the trace
+/// parser reads the names from what the bench prints.
+pub const OPS: &[(&str, &str, Op)] = &[
+    ("q * q", "rigtform", rigtform_mul),
+    ("q * q", "glam", glam_mul),
+    ("q * q", "nalgebra", nalgebra_mul),
+    ("q * q", "micromath", micromath_mul),
+    ("rotate Cvec3", "rigtform", rigtform_rotate),
+    ("rotate Cvec3", "glam", glam_rotate),
+    ("rotate Cvec3", "nalgebra", nalgebra_rotate),
+    ("rotate Cvec3", "micromath", micromath_rotate),
+    ("normalize", "rigtform", rigtform_normalize),
+    ("normalize", "glam", glam_normalize),
+    ("normalize", "nalgebra", nalgebra_normalize),
+    ("normalize", "micromath", micromath_normalize),
+    ("pow", "rigtform", rigtform_pow),
+    ("pow", "nalgebra", nalgebra_pow),
+    ("slerp", "rigtform", rigtform_slerp),
+    ("slerp", "glam", glam_slerp),
+    ("slerp", "nalgebra", nalgebra_slerp),
+    ("nlerp", "rigtform", rigtform_nlerp),
+    ("nlerp", "glam", glam_nlerp),
+    ("nlerp", "nalgebra", nalgebra_nlerp),
+    ("q * q renormalized", "rigtform", rigtform_mul_renormalized),
+    ("RigTForm * RigTForm", "rigtform", rigtform_rig_mul),
+    ("RigTForm * RigTForm", "nalgebra", nalgebra_rig_mul),
+    ("RigTForm inv", "rigtform", rigtform_rig_inv),
+    ("RigTForm inv", "nalgebra", nalgebra_rig_inv),
+    ("RigTForm * point", "rigtform", rigtform_rig_apply),
+    ("RigTForm * point", "nalgebra", nalgebra_rig_apply),
+    ("RigTForm interpolate", "rigtform", rigtform_interpolate),
+    ("RigTForm interpolate", "glam", glam_interpolate),
+    ("RigTForm interpolate", "nalgebra", nalgebra_interpolate),
+    ("Matrix4 from RigTForm", "rigtform", rigtform_matrix),
+    ("Matrix4 from RigTForm", "glam", glam_matrix),
+    ("Matrix4 from RigTForm", "nalgebra", nalgebra_matrix),
+];
