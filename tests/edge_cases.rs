@@ -355,7 +355,11 @@ fn slerp_of_inputs_closer_than_f32_squares_can_tell_is_the_tiny_turn() {
         let s = a.slerp(b, alpha);
         assert!(is_unit(s, UNIT_NORM_ERROR), "{alpha}: {s:?}");
         assert!(s.angle_to(a) <= SLERP_MAX_ANGLE_ERROR, "{alpha}: {s:?}");
-        assert!((s.x - alpha * 1e-20).abs() <= 1e-26, "{alpha}: {s:?}");
+        // The turn itself, to a few ulps, with the default kernels (fast-math's
+        // atan2 is only accurate to about 3e-3 rad absolute: 6 % here).
+        if !cfg!(feature = "fast-math") {
+            assert!((s.x - alpha * 1e-20).abs() <= 1e-26, "{alpha}: {s:?}");
+        }
     }
 }
 
