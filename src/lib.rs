@@ -100,6 +100,16 @@ mod quat;
 mod rigtform;
 mod vec;
 
+/// The float kernels that every transcendental call goes through,
+/// re-exported only under Kani (`cfg(kani)`) so that the proof harnesses
+/// of `rigtform-proofs` can replace them by their contracts. Not part of
+/// the API: ordinary builds do not have this module.
+#[cfg(kani)]
+#[doc(hidden)]
+pub mod kani_kernels {
+    pub use crate::float::{atan2, sin_cos, sqrt};
+}
+
 pub use matrix::Matrix4;
 pub use quat::Quat;
 pub use rigtform::RigTForm;

@@ -1,12 +1,15 @@
 //! The contracts of the float kernels that the Kani harnesses stub.
 //!
-//! A model checker cannot follow libm's `sincosf` (a table-driven f64
-//! argument reduction) or its x86 `sqrtf` (inline assembly), so the
-//! harnesses replace them (`src/stubs.rs`) by "any value that meets the
+//! The crate's square root is inline assembly on Arm and libm's on other
+//! targets (itself inline assembly on x86), which a model checker cannot
+//! read; its sine, cosine and atan2 are f32 polynomials that a model
+//! checker can follow, but slowly. So the harnesses replace the kernels
+//! they do not need exactly (`src/stubs.rs`) by "any value that meets the
 //! contract". That is sound only if the real kernels meet the contracts:
-//! `tests/contracts.rs` checks them against libm on edge values and random
-//! bit patterns. The contracts are deliberately weak (ranges and the
-//! Pythagorean identity, not accuracy): what the unit-norm laws need.
+//! `kernels_meet_the_contracts_the_proofs_stub_them_by` in the crate's
+//! `src/float.rs` checks them, with each backend, on edge values and a
+//! sweep of every binade. The contracts are deliberately weak (ranges and
+//! the Pythagorean identity, not accuracy): what the unit-norm laws need.
 
 use rigtform::accuracy::SIN_COS_MAX_ABS_ERROR;
 
@@ -19,7 +22,7 @@ pub const PYTHAGORAS_TOL: f64 = 3.0 * SIN_COS_MAX_ABS_ERROR as f64;
 /// `(1 + u)^2 - 1 <= 2u + u^2`.
 pub const SQRT_SQUARED_REL_TOL: f64 = 2.0 / 16_777_216.0 + 1.0 / 281_474_976_710_656.0;
 
-/// What `sincosf(x) = (s, c)` promises: NaN for NaN or infinite `x`;
+/// What `sin_cos(x) = (s, c)` promises: NaN for NaN or infinite `x`;
 /// exactly `(x, 1)` at `x = +-0`; otherwise both in `[-1, 1]` and
 /// `|s^2 + c^2 - 1| <= PYTHAGORAS_TOL`.
 ///
@@ -39,7 +42,7 @@ pub fn sin_cos(x: f32, s: f32, c: f32) -> bool {
     s.abs() <= 1.0 && c.abs() <= 1.0 && (s64 * s64 + c64 * c64 - 1.0).abs() <= PYTHAGORAS_TOL
 }
 
-/// What `atan2f(y, x) = phi` promises: NaN if either argument is NaN;
+/// What `atan2(y, x) = phi` promises: NaN if either argument is NaN;
 /// otherwise `phi` in `[-pi, pi]` (the `f32` nearest pi bounding it), with
 /// the sign of `y` (atan2 is odd in `y`, signed zeros included).
 ///
@@ -55,7 +58,7 @@ pub fn atan2(y: f32, x: f32, phi: f32) -> bool {
     phi.abs() <= core::f32::consts::PI && phi.is_sign_negative() == y.is_sign_negative()
 }
 
-/// What `sqrtf(x) = r` promises: NaN for NaN or negative `x` (but `-0`
+/// What `sqrt(x) = r` promises: NaN for NaN or negative `x` (but `-0`
 /// gives `-0`); `r == x` at zero and infinity; otherwise `r > 0` with
 /// `|r^2 - x| <= SQRT_SQUARED_REL_TOL x`.
 ///

@@ -11,11 +11,18 @@
 //! Every assumption is marked **precondition** (the law's own, from its
 //! docs) or **solver bound** (narrower than the law allows, only to keep the
 //! model checker's float arithmetic tractable and every product finite:
-//! Kani checks for NaN and overflow). Harnesses that call libm's kernels
-//! stub them by their contracts (`src/stubs.rs`), so a proof covers every
-//! kernel that meets the contract, libm included (`tests/contracts.rs`).
-//! They check the default (libm) backend; `fast-math`'s kernels are not
-//! stubbed and not model-checked.
+//! Kani checks for NaN and overflow).
+//!
+//! The square root is stubbed by its contract everywhere (`src/stubs.rs`:
+//! it is inline assembly, which Kani cannot read). `pow` also gets its
+//! sine, cosine and atan2 stubbed: its unit norm needs only the Pythagorean
+//! identity, whatever the angle, so the proof then covers every kernel that
+//! meets the contracts (which `src/float.rs` checks the crate's kernels
+//! meet). `slerp`'s unit norm needs accurate angles, so its harnesses keep
+//! the real f32 kernels (branch-free polynomials and an integer argument
+//! reduction, all plain arithmetic a model checker can follow). They check
+//! the default backend; `fast-math`'s micromath kernels are not
+//! model-checked (the stand-in runs the bodies with both backends).
 
 #[cfg(not(kani))]
 use crate::kani;
@@ -107,7 +114,7 @@ fn quat_product_multiplies_norms() {
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn quat_rotation_preserves_length() {
     check("quat_rotation_preserves_length", || {
@@ -121,7 +128,7 @@ fn quat_rotation_preserves_length() {
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn normalize_is_unit_from_subnormal_to_max() {
     check("normalize_is_unit_from_subnormal_to_max", || {
@@ -138,9 +145,12 @@ fn normalize_is_unit_from_subnormal_to_max() {
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))] // scaled sums of squares over four components
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
-#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
-#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::atan2, crate::stubs::atan2))]
+#[cfg_attr(
+    kani,
+    kani::stub(rigtform::kani_kernels::sin_cos, crate::stubs::sin_cos)
+)]
 #[cfg_attr(not(kani), test)]
 fn pow_is_unit_for_every_finite_input() {
     check("pow_is_unit_for_every_finite_input", || {
@@ -153,9 +163,12 @@ fn pow_is_unit_for_every_finite_input() {
 
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
-#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
-#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::atan2, crate::stubs::atan2))]
+#[cfg_attr(
+    kani,
+    kani::stub(rigtform::kani_kernels::sin_cos, crate::stubs::sin_cos)
+)]
 #[cfg_attr(not(kani), test)]
 fn pow_of_non_finite_input_is_nan() {
     check("pow_of_non_finite_input_is_nan", || {
@@ -169,9 +182,7 @@ fn pow_of_non_finite_input_is_nan() {
 
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
-#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
-#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn slerp_of_non_finite_input_is_nan() {
     check("slerp_of_non_finite_input_is_nan", || {
@@ -185,12 +196,11 @@ fn slerp_of_non_finite_input_is_nan() {
 }
 
 /// Identical, nearly identical, antipodal and opposite pairs are all among
-/// the inputs. Proof time with Kani: not run yet.
+/// the inputs. The real sine and atan2 kernels: the norm depends on their
+/// accuracy. Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
-#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
-#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn slerp_is_unit_for_every_finite_alpha() {
     check("slerp_is_unit_for_every_finite_alpha", || {
@@ -204,9 +214,7 @@ fn slerp_is_unit_for_every_finite_alpha() {
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
-#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
-#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn slerp_is_exact_at_zero() {
     check("slerp_is_exact_at_zero", || {
@@ -219,7 +227,7 @@ fn slerp_is_exact_at_zero() {
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn nlerp_is_unit() {
     check("nlerp_is_unit", || {
@@ -233,7 +241,7 @@ fn nlerp_is_unit() {
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))] // three entries, and normalize's four components
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn blend_of_three_is_unit_or_identity() {
     check("blend_of_three_is_unit_or_identity", || {
@@ -290,7 +298,7 @@ fn any_rig_tform() -> RigTForm {
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn rigtform_times_inverse_is_identity() {
     check("rigtform_times_inverse_is_identity", || {
@@ -301,7 +309,7 @@ fn rigtform_times_inverse_is_identity() {
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn rigtform_inverse_is_an_involution() {
     check("rigtform_inverse_is_an_involution", || {
@@ -312,7 +320,7 @@ fn rigtform_inverse_is_an_involution() {
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(17))] // the law compares 16 matrix entries
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn rigtform_inverse_agrees_with_matrix_inverse() {
     check("rigtform_inverse_agrees_with_matrix_inverse", || {
@@ -323,7 +331,7 @@ fn rigtform_inverse_agrees_with_matrix_inverse() {
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn rigtform_matrix_moves_points_as_the_transform() {
     check("rigtform_matrix_moves_points_as_the_transform", || {
@@ -339,9 +347,7 @@ fn rigtform_matrix_moves_points_as_the_transform() {
 /// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(libm::sqrtf, crate::stubs::sqrtf))]
-#[cfg_attr(kani, kani::stub(libm::atan2f, crate::stubs::atan2f))]
-#[cfg_attr(kani, kani::stub(libm::sincosf, crate::stubs::sincosf))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn rigtform_interpolate_is_exact_at_zero() {
     check("rigtform_interpolate_is_exact_at_zero", || {

@@ -12,7 +12,7 @@
 //!   call the same laws.
 //!
 //! [`edge`] holds the edge values all of them start from and [`draw`] the
-//! seeded generator the stand-in and the on-target tests share, [`reference`]
+//! seeded generator the stand-in and the on-target tests share, [`reference`](mod@reference)
 //! the notes' formulas in `f64` for the on-target accuracy checks.
 //! [`contracts`] states what the stubbed float kernels promise.
 //!
