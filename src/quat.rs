@@ -55,6 +55,18 @@ pub(crate) struct Polar {
     pub(crate) phi: f32,
 }
 
+/// 2^-21 (four ulps of 1): the cosine between a unit direction and the
+/// quaternion it must be orthogonal to, below which slerp's extrapolation
+/// takes the direction as orthogonal (a larger one would show in the norm
+/// of the result, by up to that much).
+const ORTHOGONAL_TO_ULPS: f32 = 4.768_371_6e-7;
+
+/// 2^-63: the smallest length of the direction of slerp's extrapolation (in
+/// the scaled units of `scale_for_squares`, where the difference it comes
+/// from is at least 2^-50 long) whose squares are still normal, so that it
+/// normalizes to full precision; shorter, it is rounding.
+const MIN_ORTHOGONAL: f32 = 1.084_202_2e-19;
+
 /// How far the ratio of two squared norms may be from 1 for slerp to treat
 /// the inputs as unit: well above the rounding of f32 unit quaternions
 /// (a few 1e-7), well below any real drift.
@@ -524,7 +536,8 @@ impl Quat {
         // |u| = |self|^2 |other| sin(phi) and |self| dot = |self|^2 |other|
         // cos(phi), both times u.scale: the notes' phi in [0, pi/2].
         let n = float::sqrt(n2);
-        let phi = float::atan2(float::sqrt(u.sum), n * dot * u.scale);
+        let beta = float::sqrt(u.sum);
+        let phi = float::atan2(beta, n * dot * u.scale);
         // Extrapolating (where the two coefficients below would grow and
         // their rounding show in the norm), and with fast-math (whose sines
         // are off by about 1e-3 absolute, too much to divide by a small
@@ -536,8 +549,27 @@ impl Quat {
             let [w, x, y, z] = u.v;
             let dir = Self::new(w, x, y, z);
             let dir = dir.weighted_sum(1.0, self, -dir.dot(self) / n2);
-            let k = 1.0 / float::sqrt(dir.norm_squared());
-            let dir = Self::new(dir.w * k, dir.x * k, dir.y * k, dir.z * k);
+            // When the inputs are one rotation to within ulps, u is mostly
+            // rounding along self, and what the projection leaves is
+            // rounding too: it may vanish, or be no more orthogonal to self
+            // than u was. There is then no direction to turn in, and no turn
+            // worth the name (found by the slerp fuzz target: such inputs
+            // extrapolated by -4e-18, -2.7e7 and -1.5e21 gave infinities,
+            // and norms 1 + 2e-6 and 1.9). Within a few ulps of orthogonal,
+            // the norm of the result is off by no more than that.
+            let m = float::sqrt(dir.norm_squared());
+            if !(m >= MIN_ORTHOGONAL) {
+                return self;
+            }
+            let dir = Self::new(dir.w / m, dir.x / m, dir.y / m, dir.z / m);
+            if dir.dot(self).abs() > ORTHOGONAL_TO_ULPS * n {
+                return self;
+            }
+            // The angle of the part of u orthogonal to self, the part the
+            // turn goes along, rather than of all of u, whose rounding alpha
+            // would blow up into a turn. Where the two differ, the angle is
+            // tiny and atan2 linear: the ratio of the lengths scales it.
+            let phi = phi * (m / beta);
             // |alpha| <= f32::MAX / 4 and phi <= pi/2 keep alpha * phi
             // finite. Beyond, an ulp of alpha phi is far more than a turn
             // (any angle is as right as any other), so alpha is clamped.

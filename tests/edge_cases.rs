@@ -463,3 +463,48 @@ fn renormalized_product_is_the_same_rotation_as_the_plain_one() {
     assert!((n - 1.0).abs() <= UNIT_NORM_ERROR, "{n}");
     assert!(is_nan_quat(Quat::NAN.mul_renormalized(Quat::IDENTITY)));
 }
+
+/// Regression, found by the `slerp` fuzz target: unit inputs one rotation
+/// to within an ulp but on opposite hemispheres (cn flips one), and an
+/// extrapolating alpha. The direction to turn in was subnormal and lost its
+/// precision in the normalization, and `slerp` returned infinities.
+#[test]
+fn slerp_extrapolated_from_nearly_antipodal_inputs_is_unit() {
+    let (h, t) = (8.8e-44, -4.408_238_2e-18);
+    let a = Quat::new(0.0, h, h, h).normalize();
+    let b = Quat::new(h, t, t, t).normalize();
+    for alpha in [t, -1e-3, 1.5, -4.4e-18, 1e30, 0.5] {
+        rigtform_proofs::laws::slerp_is_unit(a, b, alpha)
+            .unwrap_or_else(|v| panic!("alpha {alpha:e}: {v:?}"));
+        // Up to alpha = 1.5 it turns by at most 1.5 times the (sub-ulp)
+        // angle between the inputs; beyond, the turn is as large as alpha
+        // makes it.
+        let s = a.slerp(b, alpha);
+        if alpha.abs() <= 1.5 {
+            let bound = 1.5 * a.angle_to(b) + SLERP_MAX_ANGLE_ERROR;
+            assert!(s.angle_to(a) <= bound, "alpha {alpha:e}: {s:?}");
+        }
+    }
+}
+
+/// Regression, found by the `slerp` fuzz target: nearly antipodal inputs of
+/// very different scales, extrapolated far. One Gram-Schmidt pass left the
+/// direction of the turn off orthogonal by ulps of the rounding it removed,
+/// and the result off unit by 2e-6.
+#[test]
+fn slerp_extrapolated_far_from_nearly_antipodal_inputs_of_any_scale_is_unit() {
+    let b = Quat::new(2.195_525_5e-18, -26_711_958.0, -26_711_958.0, -26_711_958.0).normalize();
+    // The second first input is the same rotation as -b to within 1e-22
+    // rad: most of the difference is rounding along a, which once made a
+    // turn of 2.7e7 times that rounding.
+    for w in [1.599_975_6, 9.094_808e-14] {
+        let a = Quat::new(w, 865_309_600.0, 865_309_600.0, 865_309_600.0).normalize();
+        for alpha in [-26_711_958.0, 26_711_958.0, -3e5, 1e9, -1.511_584e21] {
+            rigtform_proofs::laws::slerp_is_unit(a, b, alpha)
+                .unwrap_or_else(|v| panic!("w {w:e}, alpha {alpha:e}: {v:?}"));
+        }
+    }
+    let a = Quat::new(9.094_808e-14, 865_309_600.0, 865_309_600.0, 865_309_600.0).normalize();
+    let s = a.slerp(b, -26_711_958.0);
+    assert!(s.angle_to(a) < 1e-14, "{s:?}");
+}
