@@ -558,7 +558,7 @@ impl Quat {
             // and norms 1 + 2e-6 and 1.9). Within a few ulps of orthogonal,
             // the norm of the result is off by no more than that.
             let m = float::sqrt(dir.norm_squared());
-            if !(m >= MIN_ORTHOGONAL) {
+            if m.is_nan() || m < MIN_ORTHOGONAL {
                 return self;
             }
             let dir = Self::new(dir.w / m, dir.x / m, dir.y / m, dir.z / m);
