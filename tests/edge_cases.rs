@@ -383,6 +383,29 @@ fn slerp_of_large_non_unit_inputs_is_finite_and_scale_free() {
 }
 
 #[test]
+fn slerp_extrapolated_from_non_unit_inputs_is_scale_free() {
+    // Extrapolation takes its own path (the direction of the turn made
+    // orthogonal to a by a projection divided by |a|^2); it too turns by
+    // alpha times the angle whatever the norms, down to tiny ones, where
+    // the projection's coefficient exceeds |a|^2.
+    let mut draws = common::Draws::new(34);
+    for _ in 0..1_000 {
+        let (a, b) = (draws.unit_quat(), draws.unit_quat());
+        for (sa, sb) in [(1e-10f32, 3e-10f32), (2.0, 0.5), (1e10, 1e11)] {
+            let scaled = |q: Quat, k: f32| Quat::new(q.w * k, q.x * k, q.y * k, q.z * k);
+            for alpha in [-0.5f32, 1.5, 3.0] {
+                let s = scaled(a, sa).slerp(scaled(b, sb), alpha);
+                let want = a.slerp(b, alpha);
+                assert!(
+                    s.normalize().angle_to(want) <= 8.0 * SLERP_MAX_ANGLE_ERROR,
+                    "{a:?} {b:?} {sa} {alpha}: {s:?} against {want:?}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
 fn slerp_of_antipodal_inputs_stays_put() {
     let a = Quat::from_axis_angle(Cvec3::new(2.0, 1.0, -1.0), 0.8);
     for alpha in [0.3f32, 1.0, 2.0] {
@@ -507,4 +530,38 @@ fn slerp_extrapolated_far_from_nearly_antipodal_inputs_of_any_scale_is_unit() {
     let a = Quat::new(9.094_808e-14, 865_309_600.0, 865_309_600.0, 865_309_600.0).normalize();
     let s = a.slerp(b, -26_711_958.0);
     assert!(s.angle_to(a) < 1e-14, "{s:?}");
+}
+
+// With the default kernels: fast-math's atan2 is off by about 6 % of such
+// tiny angles (within its absolute bound), which alpha multiplies too.
+#[cfg(not(feature = "fast-math"))]
+#[test]
+fn slerp_extrapolated_from_inputs_ulps_apart_turns_by_no_more_than_their_resolution() {
+    // Inputs 3e-8 to 1e-5 rad apart differ by a few ulps to a few hundred:
+    // the direction between them is partly rounding along a. Slerp turns by
+    // the angle of the part orthogonal to a, so that extrapolating by alpha
+    // is off by at most alpha times about two ulps (2^-22 rad), the
+    // resolution of their difference; taking the angle of all of it was
+    // off by up to 8e-7 alpha (27 times the turn at 3e-8 rad apart).
+    use rigtform_proofs::reference::Quat64;
+    let mut draws = common::Draws::new(35);
+    for _ in 0..20_000 {
+        let a = draws.unit_quat();
+        let axis = draws.unit_vec64();
+        let axis = Cvec3::new(axis.x as f32, axis.y as f32, axis.z as f32);
+        for apart in [3e-8f32, 1e-7, 1e-6, 1e-5] {
+            let b = Quat::from_axis_angle(axis, apart) * a;
+            let (a64, b64) = (Quat64::from(a), Quat64::from(b));
+            for alpha in [-1e3f32, 1e3, 1e5] {
+                let want = Quat64::slerp(a64, b64, alpha.into());
+                let got = Quat64::from(a.slerp(b, alpha));
+                let err = Quat64::angle_between(got, want);
+                let bound = f64::from(alpha.abs()) * 2f64.powi(-22);
+                assert!(
+                    err <= bound,
+                    "{a:?} {b:?} {alpha}: off by {err:e}, bound {bound:e}"
+                );
+            }
+        }
+    }
 }
