@@ -5,6 +5,9 @@
 #
 #   embedded/bench.sh            # both tables (about 10 minutes: 130 small builds)
 #   embedded/bench.sh count      # instruction counts only (a minute)
+#   embedded/bench.sh budget     # the counts, then fails unless slerp keeps
+#                                # to issue 5's targets: 400 instructions
+#                                # and 2 KiB of flash at opt-level "s"
 #
 # Instructions: src/bin/bench.rs brackets each call between two marker
 # functions; QEMU logs every executed instruction (-singlestep -d
@@ -98,3 +101,15 @@ awk -F'|' '
         printf "| %s | %s | %s | %s | %s |\n", $1, $2, $3, (s == "" ? "-" : s), (o3 == "" ? "-" : o3)
     }
 ' "$work/flash" "$work/instructions"
+
+# --- slerp's budget ------------------------------------------------------------
+if [ "$MODE" = budget ]; then
+    base=$(size_of s empty)
+    bytes=$(( $(size_of s rigtform_slerp) - base ))
+    calls=$(awk -F'|' '$1 == "slerp" && $2 == "rigtform" { print $3 }' "$work/instructions")
+    echo "slerp on the Cortex-M4F: $calls instructions per call (budget 400), $bytes bytes of flash at opt-level \"s\" (budget 2048)"
+    if [ -z "$calls" ] || [ "$calls" -gt 400 ] || [ "$bytes" -gt 2048 ]; then
+        echo "error: slerp is over its budget" >&2
+        exit 1
+    fi
+fi
