@@ -131,9 +131,9 @@ pub fn atan2(y: f32, x: f32) -> f32 {
 /// fast-math: micromath's parabola approximations, absolute error
 /// about 1e-3 (measured by `sweep_sin_cos` below), for
 /// `2^-6 <= |x| <= 2^9`; the default kernel beyond, where micromath's own
-/// reduction loses accuracy (and returns infinities past 2^16). Below 2^-6, where micromath's absolute
-/// error would swamp small rotations (its `sin(1e-5)` is 0), Taylor
-/// polynomials of degree 3 and 2 instead: error below `x^5 / 120` (8e-12)
+/// reduction loses accuracy (and returns infinities past 2^16). Below
+/// 2^-6, where micromath's absolute error would swamp small rotations (its
+/// `sin(1e-5)` is 0), Taylor polynomials of degree 3 and 2 instead: error below `x^5 / 120` (8e-12)
 /// and `x^4 / 24` (2.5e-9, under half an ulp of 1).
 #[inline]
 #[must_use]
@@ -286,8 +286,8 @@ fn atan_poly(u: f32) -> f32 {
 
 /// `sin(r + t)` for `|r| <= pi/4` (a little beyond is fine) and a tail
 /// `t` below an ulp of `r`: `r + (t + r^3 P(r^2))` with `P` the degree-2
-/// minimax polynomial [`SIN`]. Within 0.8 ulp for `t = 0`
-/// ([`SIN_COS_POLY_ULP`]); the tail carries the bits of a reduced argument
+/// minimax polynomial [`SIN`]. Within 1 ulp for `t = 0`
+/// ([`SIN_COS_POLY_ULP`]; 0.805 at worst); the tail carries the bits of a reduced argument
 /// that do not fit in `r`.
 #[inline]
 fn sin_poly(r: f32, t: f32) -> f32 {
@@ -298,8 +298,8 @@ fn sin_poly(r: f32, t: f32) -> f32 {
 /// `cos(r + t)` for `|r| <= pi/4` and a tail `t` below an ulp of `r`:
 /// `1 - r^2/2 - r t + r^4 P(r^2)` with `P` the degree-2 minimax polynomial
 /// [`COS`]. `1 - r^2/2` is rounded once, and its rounding error is
-/// recovered (as in FreeBSD's `k_cos.c`), so the result is within 0.8 ulp
-/// for `t = 0` ([`SIN_COS_POLY_ULP`]).
+/// recovered (as in FreeBSD's `k_cos.c`), so the result is within 1 ulp
+/// for `t = 0` ([`SIN_COS_POLY_ULP`]; 0.749 at worst).
 #[inline]
 fn cos_poly(r: f32, t: f32) -> f32 {
     let s = r * r;
@@ -361,7 +361,7 @@ pub(crate) fn atan2_kernel(y: f32, x: f32) -> f32 {
 }
 
 /// The sign bit of an f32.
-const SIGN: u32 = 0x8000_0000;
+pub(crate) const SIGN: u32 = 0x8000_0000;
 
 /// `if c { a } else { b }`, by bit masks: no branch for the data to
 /// mispredict (both values are computed anyway).
@@ -478,11 +478,12 @@ fn reduce_by_quarter_turns(a: f32) -> (u32, f32, f32) {
     let bits = a.to_bits();
     // a >= 3 pi/4 is normal: its biased exponent is at least 128.
     let m = u64::from((bits & 0x007f_ffff) | 0x0080_0000);
-    let e = (bits >> 23) as i32 - 150; // a = m 2^e, e in [-22, 104]
-                                       // The first bit of 2/pi needed is bit e - 1 after the binary point,
-                                       // which is bit e + 30 of the table (whose bit 32 is 2/pi's first).
-                                       // (e + 30 >= 8 for such an a; the cast cannot wrap, and the bound
-                                       // keeps the three windows inside the table.)
+    // a = m 2^e, e in [-22, 104].
+    let e = (bits >> 23) as i32 - 150;
+    // The first bit of 2/pi needed is bit e - 1 after the binary point,
+    // which is bit e + 30 of the table (whose bit 32 is 2/pi's first).
+    // e + 30 >= 8 for such an a, so the cast cannot wrap; the bound keeps
+    // the three windows inside the table.
     let k = ((e + 30) as u32).min(134);
     let (j, shift) = ((k / 32) as usize, k % 32);
     let word = |i: usize| u64::from(TWO_OVER_PI.get(i).copied().unwrap_or(0));

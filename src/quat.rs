@@ -481,9 +481,9 @@ impl Quat {
     ///
     /// `self` and `other` are unit quaternions, or nearly so (the result has
     /// the norm of `self`, up to rounding). NaN or infinite inputs give
-    /// [`Quat::NAN`]. Every finite `alpha` works; beyond `f32::MAX / 4`, where
-    /// an ulp of `alpha phi` is many turns, it is taken as `f32::MAX / 4`
-    /// (still a unit rotation about the same axis).
+    /// [`Quat::NAN`]. Every finite `alpha` gives a unit result; beyond
+    /// 2^125 in magnitude, where an ulp of `alpha phi` is many turns, it is
+    /// taken as +-2^125.
     ///
     /// # Accuracy
     ///
@@ -563,9 +563,8 @@ impl Quat {
             // the norm of the result is off by no more than that.
             let m = float::sqrt(dir.norm_squared());
             // Written to be true for a NaN m too. The negated comparison is
-            // 12 bytes smaller on the Cortex-M4F than `m.is_nan() || m < ..`
-            // (2048 against 2060 for all of slerp), which keeps slerp
-            // within 2 KiB of flash.
+            // 12 bytes smaller on the Cortex-M4F than `m.is_nan() || m < ..`,
+            // which slerp's 2 KiB of flash needs (`embedded/bench.sh budget`).
             #[allow(clippy::neg_cmp_op_on_partial_ord)]
             let no_direction = !(m >= MIN_ORTHOGONAL);
             if no_direction {
@@ -589,8 +588,8 @@ impl Quat {
             // is as right as any other), so |alpha| is clamped, on its bits:
             // one comparison of integers, 14 bytes smaller on the Cortex-M4F
             // than the two of floats that `clamp` makes.
-            let sign = alpha.to_bits() & 0x8000_0000;
-            let magnitude = (alpha.to_bits() & 0x7fff_ffff).min(ALPHA_LIMIT_BITS);
+            let sign = alpha.to_bits() & float::SIGN;
+            let magnitude = (alpha.to_bits() & !float::SIGN).min(ALPHA_LIMIT_BITS);
             let alpha = f32::from_bits(magnitude | sign);
             let (s, c) = float::sin_cos(alpha * phi);
             return self.weighted_sum(c, dir, s * n);
@@ -786,8 +785,9 @@ impl Quat {
     ///
     /// For long integration chains (a gyro integrator multiplying millions
     /// of small rotations): plain products let the rounding errors of the
-    /// norm add up, while here a norm of `1 + e` comes out as `1 - 3 e^2 / 8`
-    /// plus one rounding, so the drift cannot accumulate.
+    /// norm add up, while here a product whose squared norm is `1 + e` comes
+    /// out with a norm of `1 - 3 e^2 / 8` plus one rounding, so the drift
+    /// cannot accumulate.
     ///
     /// # Preconditions
     ///
