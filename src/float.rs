@@ -789,31 +789,29 @@ mod tests {
         assert!(worst <= accuracy::ATAN2_MAX_ABS_ERROR as f64, "{worst}");
     }
 
-    #[test]
-    fn sweep_sin_cos() {
+    /// The largest absolute error of `sin_cos` over `n` points of [lo, hi],
+    /// checked against `SIN_COS_MAX_ABS_ERROR`.
+    fn sweep_sin_cos_over(what: &str, lo: f64, hi: f64) {
         let mut worst: f64 = 0.0;
-        for x in spread(-10.0, 10.0, 400_000) {
+        for x in spread(lo, hi, 400_000) {
             let (s, c) = sin_cos(x);
             worst = worst
                 .max((s as f64 - (x as f64).sin()).abs())
                 .max((c as f64 - (x as f64).cos()).abs());
         }
-        std::println!("sin_cos: max absolute error {worst:.3e}");
+        std::println!("{what}: max absolute error {worst:.3e}");
         assert!(worst <= accuracy::SIN_COS_MAX_ABS_ERROR as f64, "{worst}");
+    }
+
+    #[test]
+    fn sweep_sin_cos() {
+        sweep_sin_cos_over("sin_cos", -10.0, 10.0);
     }
 
     #[test]
     fn sweep_sin_cos_of_large_arguments() {
         // The turns pow and slerp hand to sin_cos with large exponents.
-        let mut worst: f64 = 0.0;
-        for x in spread(-70_000.0, 70_000.0, 400_000) {
-            let (s, c) = sin_cos(x);
-            worst = worst
-                .max((s as f64 - (x as f64).sin()).abs())
-                .max((c as f64 - (x as f64).cos()).abs());
-        }
-        std::println!("sin_cos of large arguments: max absolute error {worst:.3e}");
-        assert!(worst <= accuracy::SIN_COS_MAX_ABS_ERROR as f64, "{worst}");
+        sweep_sin_cos_over("sin_cos of large arguments", -70_000.0, 70_000.0);
     }
 
     /// The Kani harnesses of `rigtform-proofs` replace these three kernels
