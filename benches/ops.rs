@@ -231,7 +231,9 @@ fn quat_ops(c: &mut Criterion) {
     }
 }
 
-/// The operations, in the order they are run and tabulated.
+/// The operations, in the order they are run and tabulated
+/// (`tools/perf-report.sh` lists the same names for its rows: keep the two
+/// alike).
 const OPS: [&str; 16] = [
     "q*q",
     "q*q renormalized",

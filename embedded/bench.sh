@@ -3,7 +3,7 @@
 # Cortex-M4F (QEMU mps2-an386), for rigtform and its peers (glam and
 # nalgebra built with libm, micromath): prints a Markdown table.
 #
-#   embedded/bench.sh            # both tables (about 10 minutes: 130 small builds)
+#   embedded/bench.sh            # both tables (about 10 minutes: 68 small builds)
 #   embedded/bench.sh count      # instruction counts only (a minute)
 #   embedded/bench.sh budget     # the counts, then fails unless slerp keeps
 #                                # to issue 5's targets: 400 instructions
@@ -24,6 +24,10 @@ cd "$(dirname "$0")"
 
 TARGET=thumbv7em-none-eabihf
 MODE=${1:-all}
+case $MODE in
+    all | count | budget) ;;
+    *) echo "usage: $0 [all|count|budget]" >&2; exit 2 ;;
+esac
 rustup component add llvm-tools >/dev/null 2>&1 || true
 TOOLS="$(rustc --print sysroot)/lib/rustlib/$(rustc -vV | sed -n 's/^host: //p')/bin"
 NM="$TOOLS/llvm-nm"

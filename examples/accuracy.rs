@@ -151,8 +151,7 @@ const CLASSES: [(&str, Class); 11] = [
     ("norm 1 +- 1e-3", Class::NearUnit),
 ];
 
-/// One draw of a class: the inputs and the exact result (or both exact
-/// results, when two ways are equally short).
+/// One draw of a class: the two inputs and the parameter.
 fn draw(class: Class, d: &mut Draws) -> ([f32; 4], [f32; 4], f32) {
     let a64 = d.unit_quat64();
     let t = match class {

@@ -36,9 +36,10 @@ done > "$out/host.txt"
     echo "| operation | rigtform | rigtform (fast-math) | glam (SIMD) | glam (scalar-math) | nalgebra | micromath | cgmath | rigtform / fastest peer |"
     echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
     awk -F'|' '
-        { ns[$1 "|" $2] = $3 / 1024; if (!($1 in seen)) { seen[$1] = 1; order[++n] = $1 } }
+        { ns[$1 "|" $2] = $3 / 1024 }
         END {
             split("rigtform|rigtform (fast-math)|glam (SIMD)|glam (scalar-math)|nalgebra|micromath|cgmath", libs, "|")
+            # The rows, in the order of OPS in benches/ops.rs (keep the two alike).
             split("q*q|q*q renormalized|rotate Cvec3|rotate Cvec4|inv|normalize|pow|slerp|nlerp|blend of 4|RigTForm * RigTForm|RigTForm inv|RigTForm * point|RigTForm interpolate|Matrix4 from RigTForm|normal_matrix", ops, "|")
             for (i = 1; i in ops; i++) {
                 op = ops[i]; line = "| " op; best = 0

@@ -320,8 +320,9 @@ pub fn sheet_frames(frames: u32, rows: u32) -> Vec<u32> {
 
 /// The animation's frame sequence: forward through `frames` frames, then
 /// back, a loop without a jump; each entry is a frame index and its delay
-/// in hundredths of a second, resting 0.8 s on each keyframe and spreading
-/// the rest over about three seconds each way.
+/// in hundredths of a second, resting 0.8 s on each keyframe and showing
+/// each frame between for `300 / frames` hundredths, clamped to 2 to 20
+/// (about three seconds each way for 15 to 150 frames).
 ///
 /// ```
 /// use rigtform_render::demo::gif_sequence;
