@@ -30,6 +30,11 @@ fn is_unit(q: Quat, bound: f32) -> bool {
 // Contract item 1: no function panics, for any input bits. A panic fails the
 // test; each call's result is also checked against its documented result.
 
+/// `q` with every component times `k` (the crate has no `Quat * f32`).
+fn scaled(q: Quat, k: f32) -> Quat {
+    Quat::new(q.w * k, q.x * k, q.y * k, q.z * k)
+}
+
 #[test]
 fn no_quat_function_panics_on_any_edge_combination() {
     let alphas = [0.0, 1.0, 0.5, -1.5, f32::MAX, f32::NAN, f32::INFINITY];
@@ -214,7 +219,7 @@ fn pow_of_non_unit_quaternions_is_the_power_of_their_direction() {
     // round the direction: the reference is the f64 power of what was stored).
     let q = Quat::from_axis_angle(Cvec3::new(1.0, 2.0, 3.0), 1.1);
     for scale in [1e-40f32, 1e-20, 0.5, 3.0, 1e20, 1e38] {
-        let s = Quat::new(q.w * scale, q.x * scale, q.y * scale, q.z * scale);
+        let s = scaled(q, scale);
         let p = s.pow(0.4);
         assert!(is_unit(p, UNIT_NORM_ERROR), "{scale}: {p:?}");
         let want = common::pow64(common::to_f64(s).normalize(), 0.4);
@@ -371,8 +376,7 @@ fn slerp_of_large_non_unit_inputs_is_finite_and_scale_free() {
     for _ in 0..1_000 {
         let (a, b) = (draws.unit_quat(), draws.unit_quat());
         let alpha = draws.uniform(0.0, 1.0) as f32;
-        let big = |q: Quat| Quat::new(q.w * 1e12, q.x * 1e12, q.y * 1e12, q.z * 1e12);
-        let s = big(a).slerp(big(b), alpha);
+        let s = scaled(a, 1e12).slerp(scaled(b, 1e12), alpha);
         assert!(s.is_finite(), "{a:?} {b:?} {alpha}: {s:?}");
         let want = a.slerp(b, alpha);
         assert!(
@@ -392,7 +396,6 @@ fn slerp_extrapolated_from_non_unit_inputs_is_scale_free() {
     for _ in 0..1_000 {
         let (a, b) = (draws.unit_quat(), draws.unit_quat());
         for (sa, sb) in [(1e-10f32, 3e-10f32), (2.0, 0.5), (1e10, 1e11)] {
-            let scaled = |q: Quat, k: f32| Quat::new(q.w * k, q.x * k, q.y * k, q.z * k);
             for alpha in [-0.5f32, 1.5, 3.0] {
                 let s = scaled(a, sa).slerp(scaled(b, sb), alpha);
                 let want = a.slerp(b, alpha);
@@ -499,10 +502,11 @@ fn slerp_extrapolated_from_nearly_antipodal_inputs_is_unit() {
     for alpha in [t, -1e-3, 1.5, -4.4e-18, 1e30, 0.5] {
         rigtform_proofs::laws::slerp_is_unit(a, b, alpha)
             .unwrap_or_else(|v| panic!("alpha {alpha:e}: {v:?}"));
+        let s = a.slerp(b, alpha);
+        assert!(is_unit(s, UNIT_NORM_ERROR), "alpha {alpha:e}: {s:?}");
         // Up to alpha = 1.5 it turns by at most 1.5 times the (sub-ulp)
         // angle between the inputs; beyond, the turn is as large as alpha
         // makes it.
-        let s = a.slerp(b, alpha);
         if alpha.abs() <= 1.5 {
             let bound = 1.5 * a.angle_to(b) + SLERP_MAX_ANGLE_ERROR;
             assert!(s.angle_to(a) <= bound, "alpha {alpha:e}: {s:?}");
@@ -525,6 +529,11 @@ fn slerp_extrapolated_far_from_nearly_antipodal_inputs_of_any_scale_is_unit() {
         for alpha in [-26_711_958.0, 26_711_958.0, -3e5, 1e9, -1.511_584e21] {
             rigtform_proofs::laws::slerp_is_unit(a, b, alpha)
                 .unwrap_or_else(|v| panic!("w {w:e}, alpha {alpha:e}: {v:?}"));
+            let s = a.slerp(b, alpha);
+            assert!(
+                is_unit(s, UNIT_NORM_ERROR),
+                "w {w:e}, alpha {alpha:e}: {s:?}"
+            );
         }
     }
     let a = Quat::new(9.094_808e-14, 865_309_600.0, 865_309_600.0, 865_309_600.0).normalize();
