@@ -194,3 +194,26 @@ fn long_integration_chains_stay_unit() {
     println!("integrate: 100,000 steps, max |norm - 1| {worst:.3e}");
     assert!(worst <= accuracy::NORMALIZE_MAX_NORM_ERROR, "{worst}");
 }
+
+#[test]
+fn to_scaled_axis_is_scale_free() {
+    // The docs: any finite quaternion, not only unit ones, with subnormal or
+    // huge components scaled exactly.
+    let mut draws = Draws::new(71);
+    for _ in 0..1_000 {
+        let q = draws.unit_quat();
+        let want = q.to_scaled_axis();
+        let bound = 2.0 * accuracy::TO_SCALED_AXIS_MAX_REL_ERROR * want.norm().max(1e-30);
+        for k in [2f32.powi(-120), 1e-20, 3.0, 1e20, 2f32.powi(100)] {
+            let got = Quat::new(q.w * k, q.x * k, q.y * k, q.z * k).to_scaled_axis();
+            assert!(
+                (got - want).norm() <= bound,
+                "{q:?} times {k:e}: {got:?}, want {want:?}"
+            );
+        }
+    }
+    // Subnormal components: a quarter turn about x.
+    let got = Quat::new(1e-42, 1e-42, 0.0, 0.0).to_scaled_axis();
+    let want = Cvec3::new(core::f32::consts::FRAC_PI_2, 0.0, 0.0);
+    assert!((got - want).norm() <= 2.0 * accuracy::TO_SCALED_AXIS_MAX_REL_ERROR * want.norm());
+}

@@ -23,8 +23,9 @@ impl Quat {
     ///
     /// For angles below 0.316 rad (the common case of one gyro step) it
     /// evaluates a Taylor series with no square root, division or
-    /// trigonometric function, accurate to the last bit relative to the
-    /// angle, however small.
+    /// trigonometric function, within
+    /// [`FROM_SCALED_AXIS_MAX_REL_ERROR`](crate::accuracy::FROM_SCALED_AXIS_MAX_REL_ERROR)
+    /// of the angle relative to it, however small.
     ///
     /// # Preconditions
     ///

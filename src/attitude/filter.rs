@@ -76,7 +76,8 @@ pub struct FilterParams {
     /// field (its horizontal and vertical parts, so a change of the dip
     /// counts as much as a change of strength). The reference is the first
     /// field measured, and then follows the measurements with a 60 s time
-    /// constant, so that a new environment is accepted after a minute.
+    /// constant, so that a new environment is accepted in the end (after
+    /// about a minute for a field 30 % off; longer the further off it is).
     pub mag_gate: f32,
 }
 
@@ -194,8 +195,10 @@ struct Rest {
 /// inclination (the low-pass starts there, as if at rest); with a
 /// magnetometer, the first usable field sets the heading.
 ///
-/// Every time constant works through `1 - exp(-dt / tau)`, so the filter
-/// behaves the same at any sample rate, and with jittering `dt`.
+/// Every time constant works through `1 - exp(-dt / tau)`, so that the
+/// time constants in seconds hold at any sample rate and with jittering
+/// `dt` (tested for the [`Smoother`](super::Smoother) at 100 Hz, 1 kHz and
+/// with jittering steps; not tested for the filter as a whole).
 ///
 /// # State and cost
 ///
@@ -206,8 +209,8 @@ struct Rest {
 /// operations; the magnetometer adds two products, a rotation, an atan2, a
 /// sine-cosine and two `exp_m1`. Executed instructions per update
 /// on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s", LTO, counted
-/// by `embedded/cost.sh`): 2,343 (6D) and 3,207 (9D) with libm, 2,398 and
-/// 3,277 with `fast-math`.
+/// by `embedded/cost.sh`, by hand: CI does not check them): 1,348 (6D) and
+/// 1,887 (9D) with the default kernels, 1,350 and 1,852 with `fast-math`.
 ///
 /// # Bad input
 ///
@@ -227,7 +230,7 @@ struct Rest {
 /// # Accuracy
 ///
 /// Measured on real recordings with optical ground truth (BROAD trials 02,
-/// 07 and 16): see the README's IMU section and `examples/broad.rs`. On
+/// 07 and 16): see the README's IMU section and `examples/broad/`. On
 /// trial 16 (shipped in `tests/data/`), 6D inclination RMSE below
 /// [`accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG`](crate::accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG)
 /// degrees (`tests/broad.rs`).

@@ -156,6 +156,11 @@ mod tests {
     }
 
     #[test]
+    fn state_is_20_bytes_as_documented() {
+        assert_eq!(core::mem::size_of::<Smoother>(), 20);
+    }
+
+    #[test]
     fn jittering_steps_give_the_same_response() {
         let target = Quat::from_rotation_y(1.5);
         let mut even = Smoother::new(Quat::IDENTITY, 0.3);
