@@ -77,3 +77,23 @@ pub fn sqrt(x: f32, r: f32) -> bool {
     let (x64, r64) = (f64::from(x), f64::from(r));
     r > 0.0 && (r64 * r64 - x64).abs() <= SQRT_SQUARED_REL_TOL * x64
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A contract that accepted anything would make every stubbed proof
+    /// vacuous: each must reject what a kernel must not return.
+    #[test]
+    fn contracts_reject_what_the_kernels_must_not_return() {
+        assert!(!sin_cos(1.0, 0.9, 0.9)); // off the unit circle
+        assert!(!sin_cos(0.0, 0.0, 0.999)); // cos(0) is exactly 1
+        assert!(!sin_cos(f32::INFINITY, 0.0, 1.0)); // must be NaN
+        assert!(!atan2(-1.0, 1.0, 0.7)); // wrong sign
+        assert!(!atan2(1.0, -1.0, 3.2)); // beyond pi
+        assert!(!atan2(f32::NAN, 1.0, 0.0));
+        assert!(!sqrt(4.0, 2.001));
+        assert!(!sqrt(-1.0, 1.0));
+        assert!(!sqrt(0.0, 1e-20));
+    }
+}

@@ -385,7 +385,7 @@ pub fn rigid_matrix_moves_points_as_the_transform(a: RigTForm, c: Cvec4) -> Verd
     let d = by_matrix - by_rbt;
     let scale = vnorm1(a.t) + vnorm1(c.xyz());
     // The matrix entries carry MATRIX_ENTRY_ERROR; both paths round.
-    let tol = 8.0 * f64::from(rigtform::accuracy::MATRIX_ENTRY_ERROR) * scale;
+    let tol = 8.0 * f64::from(rigtform::accuracy::MATRIX_ENTRY_ERROR);
     let worst = [d.x, d.y, d.z, d.w]
         .iter()
         .map(|&e| f64::from(e).abs())
@@ -393,7 +393,7 @@ pub fn rigid_matrix_moves_points_as_the_transform(a: RigTForm, c: Cvec4) -> Verd
     within(
         "rigid_matrix_moves_points_as_the_transform",
         worst,
-        relative(tol, 1.0),
+        relative(tol, scale),
     )
 }
 
