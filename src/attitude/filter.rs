@@ -1,7 +1,7 @@
 //! [`OrientationFilter`]: gyroscope + accelerometer (6D) and + magnetometer
 //! (9D) attitude estimation, with gyro-bias estimation.
 
-use super::low_pass::{smoothing_factor, LowPass3};
+use super::low_pass::{low_pass, smoothing_factor};
 use crate::float;
 use crate::quat::Quat;
 use crate::vec::Cvec3;
@@ -376,9 +376,13 @@ impl OrientationFilter {
     /// f.set_bias(Cvec3::new(0.0, 1.0, 0.0)); // beyond max_bias
     /// assert_eq!(f.bias().y, FilterParams::DEFAULT.max_bias);
     /// ```
-    #[inline]
     pub fn set_bias(&mut self, bias: Cvec3) {
-        self.set_clipped_bias(bias);
+        let (length, max) = (bias.norm(), self.params.max_bias);
+        self.bias = if length > max {
+            bias * (max / length)
+        } else {
+            bias
+        };
     }
 
     /// `true` while the rest detector sees the sensor at rest (and the
@@ -467,8 +471,11 @@ impl OrientationFilter {
         }
         let resting = self.is_resting();
         if resting {
-            let mut bias = LowPass3::new(self.bias);
-            self.set_clipped_bias(bias.update(gyr, smoothing_factor(dt, p.tau_bias_rest)));
+            self.set_bias(low_pass(
+                self.bias,
+                gyr,
+                smoothing_factor(dt, p.tau_bias_rest),
+            ));
         }
 
         self.strapdown = self.strapdown.integrate(gyr - self.bias, dt);
@@ -491,19 +498,9 @@ impl OrientationFilter {
         // no bias (see max_bias).
         let error = attitude.inv() * drift * (1.0 / dt);
         if !resting && gated && error.norm() <= p.max_bias {
-            self.set_clipped_bias(self.bias - error * smoothing_factor(dt, p.tau_bias));
+            self.set_bias(self.bias - error * smoothing_factor(dt, p.tau_bias));
         }
         attitude
-    }
-
-    /// Sets the bias, scaled down to at most `max_bias` long.
-    fn set_clipped_bias(&mut self, bias: Cvec3) {
-        let (length, max) = (bias.norm(), self.params.max_bias);
-        self.bias = if length > max {
-            bias * (max / length)
-        } else {
-            bias
-        };
     }
 
     /// Updates the rest detector with one sample.
@@ -514,8 +511,8 @@ impl OrientationFilter {
             self.rest.acc = acc;
         }
         let alpha = smoothing_factor(dt, REST_LOW_PASS_TAU);
-        let gyro = LowPass3::new(self.rest.gyro).update(gyr, alpha);
-        let acc_lp = LowPass3::new(self.rest.acc).update(acc, alpha);
+        let gyro = low_pass(self.rest.gyro, gyr, alpha);
+        let acc_lp = low_pass(self.rest.acc, acc, alpha);
         let still = (gyr - gyro).norm() <= p.rest_gyro
             && gyro.norm() <= p.max_bias
             && (acc - acc_lp).norm() <= p.rest_acc * p.gravity;
@@ -539,8 +536,8 @@ impl OrientationFilter {
             self.initialized = true;
         }
         let alpha = smoothing_factor(dt, 0.5 * p.tau_acc);
-        let stage1 = LowPass3::new(self.acc_stage1).update(inertial, alpha);
-        let stage2 = LowPass3::new(self.acc_stage2).update(stage1, alpha);
+        let stage1 = low_pass(self.acc_stage1, inertial, alpha);
+        let stage2 = low_pass(self.acc_stage2, stage1, alpha);
         self.acc_stage1 = stage1;
         self.acc_stage2 = stage2;
         if (stage2.norm() - p.gravity).abs() > p.acc_gate * p.gravity {
@@ -575,8 +572,7 @@ impl OrientationFilter {
             self.mag_reference = seen;
         }
         let reference = self.mag_reference;
-        let mut follow = LowPass3::new(reference);
-        self.mag_reference = follow.update(seen, smoothing_factor(dt, MAG_REFERENCE_TAU));
+        self.mag_reference = low_pass(reference, seen, smoothing_factor(dt, MAG_REFERENCE_TAU));
         if !first && (seen - reference).norm() > p.mag_gate * reference.norm() {
             return;
         }

@@ -32,28 +32,14 @@ pub(crate) fn smoothing_factor(dt: f32, tau: f32) -> f32 {
     -float::exp_m1(-dt / tau)
 }
 
-/// A first-order low-pass of a 3-vector: `y += alpha (x - y)` with
-/// [`smoothing_factor`]. Exact for inputs held constant over each step, so
-/// its response does not depend on the sample rate.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct LowPass3 {
-    /// The filtered value.
-    pub(crate) value: Cvec3,
-}
-
-impl LowPass3 {
-    /// Starts at `value`, as if it had been the input forever.
-    pub(crate) const fn new(value: Cvec3) -> Self {
-        Self { value }
-    }
-
-    /// One step of `alpha` (a [`smoothing_factor`]) towards `input`;
-    /// returns the new value.
-    #[inline]
-    pub(crate) fn update(&mut self, input: Cvec3, alpha: f32) -> Cvec3 {
-        self.value += (input - self.value) * alpha;
-        self.value
-    }
+/// One step of a first-order low-pass of a 3-vector: `value` moved the
+/// fraction `alpha` (a [`smoothing_factor`]) of the way to `input`. Exact
+/// for inputs held constant over each step, so its response does not
+/// depend on the sample rate; the state is the caller's.
+#[inline]
+#[must_use]
+pub(crate) fn low_pass(value: Cvec3, input: Cvec3, alpha: f32) -> Cvec3 {
+    value + (input - value) * alpha
 }
 
 #[cfg(test)]
@@ -92,15 +78,12 @@ mod tests {
 
     #[test]
     fn low_pass_moves_the_fraction_alpha() {
-        let mut lp = LowPass3::new(Cvec3::ZERO);
+        let once = low_pass(Cvec3::ZERO, Cvec3::new(4.0, -8.0, 2.0), 0.25);
+        assert_eq!(once, Cvec3::new(1.0, -2.0, 0.5));
         assert_eq!(
-            lp.update(Cvec3::new(4.0, -8.0, 2.0), 0.25),
-            Cvec3::new(1.0, -2.0, 0.5)
-        );
-        assert_eq!(lp.value, Cvec3::new(1.0, -2.0, 0.5));
-        assert_eq!(
-            lp.update(Cvec3::new(3.0, 0.0, 0.0), 1.0),
+            low_pass(once, Cvec3::new(3.0, 0.0, 0.0), 1.0),
             Cvec3::new(3.0, 0.0, 0.0)
         );
+        assert_eq!(low_pass(once, once, 0.3), once, "a held input stays put");
     }
 }
