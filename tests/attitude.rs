@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{angle_error, draw_count, pow64, rotation_angle64, to_f64, vec_to_f64, Draws};
+use common::{angle_error, draw_count, pow64, rotation_angle64, to_f64, vec_to_f64, Draws, Worst};
 use nalgebra as na;
 use rigtform::accuracy;
 use rigtform::{Cvec3, Quat};
@@ -35,36 +35,12 @@ fn angle(draws: &mut Draws, hi: f64) -> f64 {
     }
 }
 
-/// Largest ratio seen, with its input.
-struct Worst(&'static str, f64, String);
-
-impl Worst {
-    fn see(&mut self, ratio: f64, input: impl FnOnce() -> String) {
-        assert!(!ratio.is_nan(), "{}: NaN for {}", self.0, input());
-        if ratio > self.1 {
-            self.1 = ratio;
-            self.2 = input();
-        }
-    }
-    fn check(&self, bound: f32) {
-        println!("{:<52} max {:.3e}  (bound {:.1e})", self.0, self.1, bound);
-        assert!(
-            self.1 <= bound as f64,
-            "{}: {:e} > {:e} at {}",
-            self.0,
-            self.1,
-            bound,
-            self.2
-        );
-    }
-}
-
 #[test]
 fn scaled_axis_maps_are_within_their_bounds() {
     let mut draws = Draws::new(61);
-    let mut exp = Worst("from_scaled_axis: angle error / |v|", 0.0, String::new());
-    let mut exp_norm = Worst("from_scaled_axis: |norm - 1|", 0.0, String::new());
-    let mut log = Worst("to_scaled_axis: |error| / |v|", 0.0, String::new());
+    let mut exp = Worst::new("from_scaled_axis: angle error / |v|");
+    let mut exp_norm = Worst::new("from_scaled_axis: |norm - 1|");
+    let mut log = Worst::new("to_scaled_axis: |error| / |v|");
     for _ in 0..draw_count() {
         let length = angle(&mut draws, 1000.0);
         let v = vector_of_length(&mut draws, length);
@@ -98,11 +74,7 @@ fn scaled_axis_maps_are_within_their_bounds() {
 #[test]
 fn exp_of_scaled_log_is_pow() {
     let mut draws = Draws::new(62);
-    let mut worst = Worst(
-        "exp(a log q) vs pow(q, a), per max(1, |a| theta)",
-        0.0,
-        String::new(),
-    );
+    let mut worst = Worst::new("exp(a log q) vs pow(q, a), per max(1, |a| theta)");
     for _ in 0..draw_count() {
         let q = draws.unit_quat();
         let a = draws.uniform(-2.0, 3.0) as f32;
@@ -123,12 +95,8 @@ fn exp_of_scaled_log_is_pow() {
 #[test]
 fn integrate_step_is_within_its_bound() {
     let mut draws = Draws::new(63);
-    let mut worst = Worst(
-        "integrate: angle error of one step (rad)",
-        0.0,
-        String::new(),
-    );
-    let mut norm = Worst("integrate: |norm - 1|", 0.0, String::new());
+    let mut worst = Worst::new("integrate: angle error of one step (rad)");
+    let mut norm = Worst::new("integrate: |norm - 1|");
     for _ in 0..draw_count() {
         let q = draws.unit_quat();
         let dt = draws.uniform(1e-4, 0.02) as f32;

@@ -8,48 +8,10 @@
 
 mod common;
 
-use common::{angle_error, draw_count, slerp64, to_f64, Draws};
+use common::{angle_error, draw_count, slerp64, to_f64, Draws, Worst};
 use nalgebra as na;
 use rigtform::accuracy;
 use rigtform::{Cvec3, Matrix4, Quat};
-
-/// The largest error seen, and the input that caused it.
-struct Worst {
-    name: &'static str,
-    error: f64,
-    input: String,
-}
-
-impl Worst {
-    fn new(name: &'static str) -> Self {
-        Self {
-            name,
-            error: 0.0,
-            input: String::new(),
-        }
-    }
-    fn see(&mut self, error: f64, input: impl FnOnce() -> String) {
-        assert!(!error.is_nan(), "{}: NaN error for {}", self.name, input());
-        if error > self.error {
-            self.error = error;
-            self.input = input();
-        }
-    }
-    fn check(&self, bound: f32) {
-        println!(
-            "{:<44} max {:.3e}  (bound {:.1e})",
-            self.name, self.error, bound
-        );
-        assert!(
-            self.error <= bound as f64,
-            "{}: error {:e} exceeds the documented bound {:e}, at {}",
-            self.name,
-            self.error,
-            bound,
-            self.input
-        );
-    }
-}
 
 fn norm_error(q: Quat) -> f64 {
     (to_f64(q).norm() - 1.0).abs()

@@ -154,3 +154,41 @@ pub fn max_entry_diff(a: [f32; 16], b: [f32; 16]) -> f32 {
         .map(|(x, y)| (x - y).abs())
         .fold(0.0, f32::max)
 }
+
+/// The largest error seen, and the input that caused it.
+pub struct Worst {
+    name: &'static str,
+    error: f64,
+    input: String,
+}
+
+impl Worst {
+    pub fn new(name: &'static str) -> Self {
+        Self {
+            name,
+            error: 0.0,
+            input: String::new(),
+        }
+    }
+    pub fn see(&mut self, error: f64, input: impl FnOnce() -> String) {
+        assert!(!error.is_nan(), "{}: NaN error for {}", self.name, input());
+        if error > self.error {
+            self.error = error;
+            self.input = input();
+        }
+    }
+    pub fn check(&self, bound: f32) {
+        println!(
+            "{:<44} max {:.3e}  (bound {:.1e})",
+            self.name, self.error, bound
+        );
+        assert!(
+            self.error <= bound as f64,
+            "{}: error {:e} exceeds the documented bound {:e}, at {}",
+            self.name,
+            self.error,
+            bound,
+            self.input
+        );
+    }
+}
