@@ -1,10 +1,9 @@
 //! The pre-generated inputs every library is timed on, and their
-//! conversions into each library's types. Shared by `benches/ops.rs` and
-//! `examples/accuracy.rs` (through `#[path]`), so that the two measure the
-//! same things.
+//! conversions into each library's types. `benches/ops.rs` times every
+//! library on these inputs; `examples/accuracy.rs` uses the conversions.
+//! The inputs come from `tests/common`'s `Draws`, as the tests' and the
+//! accuracy report's do (each includer declares `mod common`).
 #![allow(dead_code)] // each user needs a different part
-
-use rand::{Rng, SeedableRng};
 
 /// One set of random inputs, drawn once from a fixed seed.
 pub struct Inputs {
@@ -20,31 +19,27 @@ pub struct Inputs {
     pub alpha: Vec<f32>,
 }
 
-/// A unit quaternion with a uniformly distributed rotation: a point of the
-/// 4-ball, kept away from the origin, projected onto the sphere.
-pub fn unit_quat(rng: &mut impl Rng) -> [f32; 4] {
-    loop {
-        let q: [f64; 4] = core::array::from_fn(|_| rng.random_range(-1.0..1.0));
-        let n2: f64 = q.iter().map(|c| c * c).sum();
-        if (0.01..=1.0).contains(&n2) {
-            return q.map(|c| (c / n2.sqrt()) as f32);
-        }
-    }
-}
-
 impl Inputs {
     /// `n` of each input, from the seed `seed`.
     pub fn new(n: usize, seed: u64) -> Self {
-        let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
-        let vec3 =
-            |rng: &mut rand::rngs::StdRng| core::array::from_fn(|_| rng.random_range(-10.0..10.0));
-        Self {
-            a: (0..n).map(|_| unit_quat(&mut rng)).collect(),
-            b: (0..n).map(|_| unit_quat(&mut rng)).collect(),
-            v: (0..n).map(|_| vec3(&mut rng)).collect(),
-            u: (0..n).map(|_| vec3(&mut rng)).collect(),
-            alpha: (0..n).map(|_| rng.random_range(0.0..1.0)).collect(),
-        }
+        let mut d = crate::common::Draws::new(seed);
+        let quats = |d: &mut crate::common::Draws| -> Vec<[f32; 4]> {
+            (0..n)
+                .map(|_| {
+                    let q = d.unit_quat();
+                    [q.w, q.x, q.y, q.z]
+                })
+                .collect()
+        };
+        let (a, b) = (quats(&mut d), quats(&mut d));
+        let vec3s = |d: &mut crate::common::Draws| -> Vec<[f32; 3]> {
+            (0..n)
+                .map(|_| core::array::from_fn(|_| d.uniform(-10.0, 10.0) as f32))
+                .collect()
+        };
+        let (v, u) = (vec3s(&mut d), vec3s(&mut d));
+        let alpha = (0..n).map(|_| d.uniform(0.0, 1.0) as f32).collect();
+        Self { a, b, v, u, alpha }
     }
 }
 

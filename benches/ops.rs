@@ -12,6 +12,8 @@
 //! `cargo bench --bench ops` runs them all, operation by operation;
 //! `cargo bench --bench ops -- slerp` only the slerp group.
 
+#[path = "../tests/common/mod.rs"]
+mod common;
 #[path = "inputs.rs"]
 mod inputs;
 

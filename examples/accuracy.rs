@@ -22,7 +22,7 @@ mod inputs;
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use common::{pow64, rotation_angle64, slerp64, Draws};
+use common::{pow64, slerp64, Draws};
 use inputs::*;
 use nalgebra as na;
 
@@ -65,17 +65,18 @@ fn rigtform_name() -> String {
     }
 }
 
-fn to64([w, x, y, z]: [f32; 4]) -> na::Quaternion<f64> {
-    na::Quaternion::new(w as f64, x as f64, y as f64, z as f64)
+fn to64(q: [f32; 4]) -> na::Quaternion<f64> {
+    common::to_f64(rig_quat(q))
 }
 
 fn to32(q: na::Quaternion<f64>) -> [f32; 4] {
-    [q.w as f32, q.i as f32, q.j as f32, q.k as f32]
+    let q = common::to_f32(q);
+    [q.w, q.x, q.y, q.z]
 }
 
 /// The angle between two rotations given as f32 and f64 quaternions.
 fn angle_error(got: [f32; 4], want: na::Quaternion<f64>) -> f64 {
-    rotation_angle64(to64(got), want)
+    common::angle_error(rig_quat(got), want)
 }
 
 /// Errors of one library on one class: every error, NaN and panic counts.
