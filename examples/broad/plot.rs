@@ -45,7 +45,10 @@ pub fn write(path: &Path, trials: &[Trial]) -> Result<(), String> {
         let _ = std::fs::remove_file(&temporary);
         format!("{}: {e}", path.display())
     })?;
-    std::fs::rename(&temporary, path).map_err(|e| format!("{}: {e}", path.display()))
+    std::fs::rename(&temporary, path).map_err(|e| {
+        let _ = std::fs::remove_file(&temporary);
+        format!("{}: {e}", path.display())
+    })
 }
 
 /// Per bucket of samples: time (s), largest 6D inclination error and

@@ -60,8 +60,8 @@ fn main() -> ! {
     let inputs: [Input; INPUTS] = core::array::from_fn(|_| Input {
         a: quat(d.unit_quat()),
         b: quat(d.unit_quat()),
-        u: vec(d.vec3(10.0)),
-        v: vec(d.vec3(10.0)),
+        u: d.vec3(10.0).to_array(),
+        v: d.vec3(10.0).to_array(),
         t: d.uniform(0.0, 1.0),
     });
     let mut out: Output = [0.0; 16];
@@ -83,8 +83,4 @@ fn main() -> ! {
 
 fn quat(q: rigtform::Quat) -> [f32; 4] {
     [q.w, q.x, q.y, q.z]
-}
-
-fn vec(v: rigtform::Cvec3) -> [f32; 3] {
-    [v.x, v.y, v.z]
 }
