@@ -3,9 +3,8 @@
 //! the constants of `rigtform::accuracy`, times the number of rounded
 //! operations each side of an identity goes through.
 
-mod common;
+use rigtform_testkit as testkit;
 
-use common::{max_entry_diff, pow_tol, rig_tform, slerp_tol, unit_quat, vec3};
 use core::f32::consts::PI;
 use proptest::prelude::*;
 use rigtform::accuracy::{
@@ -14,6 +13,7 @@ use rigtform::accuracy::{
 };
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 use rigtform_proofs::laws::{self, Verdict};
+use testkit::{max_entry_diff, pow_tol, rig_tform, slerp_tol, unit_quat, vec3};
 
 /// A law of `rigtform_proofs::laws` (the functions the Kani harnesses, the
 /// fuzz targets and the on-target tests call too) as a proptest assertion.
@@ -187,15 +187,15 @@ proptest! {
     #[test]
     fn slerp_agrees_with_nalgebra_in_f64(a in unit_quat(), b in unit_quat(), alpha in 0.0f32..1.0) {
         use nalgebra::{Unit, UnitQuaternion};
-        let na_a = UnitQuaternion::new_normalize(common::to_f64(a));
-        let mut na_b = Unit::into_inner(UnitQuaternion::new_normalize(common::to_f64(b)));
+        let na_a = UnitQuaternion::new_normalize(testkit::to_f64(a));
+        let mut na_b = Unit::into_inner(UnitQuaternion::new_normalize(testkit::to_f64(b)));
         if na_a.as_ref().dot(&na_b) < 0.0 {
             na_b = -na_b; // nalgebra's slerp interpolates the components as given
         }
         let na_b = UnitQuaternion::new_normalize(na_b);
         if let Some(want) = na_a.try_slerp(&na_b, alpha as f64, 1e-9) {
             let tol = slerp_tol(alpha, a.angle_to(b)) + MUL_MAX_ANGLE_ERROR;
-            prop_assert!(common::angle_error(a.slerp(b, alpha), *want.as_ref()) <= tol as f64);
+            prop_assert!(testkit::angle_error(a.slerp(b, alpha), *want.as_ref()) <= tol as f64);
         }
     }
 
