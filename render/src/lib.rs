@@ -18,6 +18,9 @@
 //! 8. [`image`] and [`output`]: images, labels, PNG and GIF files written
 //!    atomically.
 //!
+//! The sample layout of a pixel ([`samples`]: how many, where) is shared
+//! by the rasterizer and the framebuffer.
+//!
 //! [`scene`] runs the stages, in parallel with `rayon` and with the same
 //! bytes out whatever the number of threads. [`euler`],
 //! [`interpolation`] and [`demo`] build the demo's animation and pictures.
@@ -52,6 +55,7 @@ pub mod interpolation;
 pub mod mesh;
 pub mod output;
 pub mod raster;
+pub mod samples;
 pub mod scene;
 pub mod shade;
 pub mod vertex;
@@ -62,7 +66,8 @@ pub use euler::Euler;
 pub use framebuffer::{linear_to_srgb8, Band, Framebuffer};
 pub use image::Image;
 pub use mesh::Mesh;
-pub use raster::{Cull, Msaa, Triangle, MAX_COORDINATE};
+pub use raster::{Cull, Triangle, MAX_COORDINATE};
+pub use samples::Msaa;
 pub use scene::{Camera, Draw, Scene, Settings, Stats};
 pub use shade::Lighting;
 pub use vertex::{transform_vertices, ClipVertex, Frame, Transforms, ATTRIBUTES};

@@ -11,10 +11,12 @@
 use core::cmp::Ordering;
 
 use crate::framebuffer::Band;
+use crate::samples::Msaa;
 use crate::vertex::ATTRIBUTES;
 use crate::viewport::ScreenVertex;
 
-/// Fixed-point fraction bits of screen positions: 1/256 of a pixel.
+/// Fixed-point fraction bits of screen positions: 1/256 of a pixel, the
+/// unit of the sample positions ([`Msaa::offsets`]) too.
 pub const SUBPIXEL_BITS: u32 = 8;
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 
@@ -22,42 +24,6 @@ const ONE: i64 = 1 << SUBPIXEL_BITS;
 /// 2^20, so that snapped coordinates stay below 2^28 and products of their
 /// differences in the edge functions below 2^58, far from `i64` overflow.
 pub const MAX_COORDINATE: f32 = 1_048_576.0;
-
-/// The sample pattern of each pixel.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Msaa {
-    /// One sample at the pixel centre.
-    Off,
-    /// Four samples in a rotated grid (the common 4x pattern), each pixel
-    /// shaded once and its colour stored in the covered samples that pass
-    /// the depth test.
-    #[default]
-    X4,
-}
-
-impl Msaa {
-    /// Samples per pixel.
-    ///
-    /// ```
-    /// use rigtform_render::Msaa;
-    /// assert_eq!(Msaa::X4.samples(), 4);
-    /// ```
-    #[must_use]
-    pub fn samples(self) -> usize {
-        self.offsets().len()
-    }
-
-    /// Sample positions inside the pixel, in 1/256 pixel from its top-left
-    /// corner.
-    #[must_use]
-    pub fn offsets(self) -> &'static [(i64, i64)] {
-        match self {
-            Msaa::Off => &[(128, 128)],
-            // (3/8, 1/8), (7/8, 3/8), (1/8, 5/8), (5/8, 7/8).
-            Msaa::X4 => &[(96, 32), (224, 96), (32, 160), (160, 224)],
-        }
-    }
-}
 
 /// Whether triangles facing away from the camera are drawn.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
