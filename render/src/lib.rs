@@ -11,11 +11,14 @@
 //! 3. [`clip`]: the near plane (and a guard band), in clip space.
 //! 4. [`viewport`]: perspective divide and viewport.
 //! 5. [`raster`]: triangle setup, back-face culling, exact fixed-point edge
-//!    functions with a top-left fill rule, 4x MSAA coverage, the depth test,
-//!    perspective-correct attributes.
-//! 6. [`shade`]: per-pixel diffuse and specular lighting (the CS175 model).
-//! 7. [`framebuffer`]: colour and depth samples, bands for threads, resolve.
-//! 8. [`image`] and [`output`]: images, labels, PNG and GIF files written
+//!    functions with a top-left fill rule, 4x MSAA coverage, depth and
+//!    perspective-correct attributes across the triangle.
+//! 6. [`fragment`]: each covered pixel: the depth test per sample, one
+//!    shading, the colour stored in the samples that passed.
+//! 7. [`shade`]: the shading the fragment stage calls, per-pixel diffuse
+//!    and specular lighting (the CS175 model).
+//! 8. [`framebuffer`]: colour and depth samples, bands for threads, resolve.
+//! 9. [`image`] and [`output`]: images, labels, PNG and GIF files written
 //!    atomically.
 //!
 //! The sample layout of a pixel ([`samples`]: how many, where) is shared
@@ -49,6 +52,7 @@
 pub mod clip;
 pub mod demo;
 pub mod euler;
+pub mod fragment;
 pub mod framebuffer;
 pub mod image;
 pub mod interpolation;
@@ -63,6 +67,7 @@ pub mod viewport;
 
 pub use clip::clip_triangle;
 pub use euler::Euler;
+pub use fragment::fill_triangle;
 pub use framebuffer::{linear_to_srgb8, Band, Framebuffer};
 pub use image::Image;
 pub use mesh::Mesh;

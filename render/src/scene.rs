@@ -1,6 +1,7 @@
 //! A scene and its rendering: every draw through the vertex stage, clipping,
 //! the viewport and triangle setup, then the bands of the framebuffer
-//! rasterized in parallel with `rayon`, and the resolve.
+//! filled in parallel with `rayon` (rasterization and the fragment stage),
+//! and the resolve.
 //!
 //! The output does not depend on the number of threads: the triangles are
 //! set up in submission order, each band is filled by one thread drawing
@@ -11,6 +12,7 @@ use rayon::prelude::*;
 use rigtform::{Cvec3, Matrix4, RigTForm};
 
 use crate::clip::clip_triangle;
+use crate::fragment::fill_triangle;
 use crate::framebuffer::Framebuffer;
 use crate::image::Image;
 use crate::mesh::Mesh;
@@ -205,7 +207,7 @@ impl Scene<'_> {
             .zip(image_rows)
             .for_each(|((band, bin), rows)| {
                 for t in bin {
-                    t.rasterize(band, settings.msaa, &shade);
+                    fill_triangle(t, band, settings.msaa, &shade);
                 }
                 if let Some(rows) = rows {
                     band.resolve_into(rows);
