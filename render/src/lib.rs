@@ -25,8 +25,9 @@
 //! by the rasterizer and the framebuffer.
 //!
 //! [`scene`] runs the stages, in parallel with `rayon` and with the same
-//! bytes out whatever the number of threads. [`euler`],
-//! [`interpolation`] and [`demo`] build the demo's animation and pictures.
+//! bytes out whatever the number of threads. [`demo`] (with its
+//! [`euler`](demo::euler) angles and [`interpolation`](demo::interpolation)
+//! methods) builds the demo's animation and pictures.
 //!
 //! ```
 //! use rigtform::{Cvec3, Quat, RigTForm};
@@ -51,11 +52,9 @@
 
 pub mod clip;
 pub mod demo;
-pub mod euler;
 pub mod fragment;
 pub mod framebuffer;
 pub mod image;
-pub mod interpolation;
 pub mod mesh;
 pub mod output;
 pub mod raster;
@@ -66,7 +65,6 @@ pub mod vertex;
 pub mod viewport;
 
 pub use clip::clip_triangle;
-pub use euler::Euler;
 pub use fragment::fill_triangle;
 pub use framebuffer::{linear_to_srgb8, Band, Framebuffer};
 pub use image::Image;

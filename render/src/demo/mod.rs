@@ -4,10 +4,13 @@
 //! checkered ground, with the paths of the frame's origin and axis tips
 //! marked.
 
+pub mod euler;
+pub mod interpolation;
+
 use rigtform::{Cvec3, Cvec4, Quat, RigTForm};
 
+use crate::demo::interpolation::Method;
 use crate::image::{Image, GLYPH_SIZE};
-use crate::interpolation::Method;
 use crate::mesh::Mesh;
 use crate::scene::{Camera, Draw, Scene, Settings};
 use crate::vertex::Frame;

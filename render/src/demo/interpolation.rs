@@ -9,7 +9,7 @@
 
 use rigtform::{Matrix4, RigTForm};
 
-use crate::euler::Euler;
+use crate::demo::euler::Euler;
 use crate::vertex::Frame;
 
 /// An interpolation method.
@@ -31,7 +31,7 @@ pub enum Method {
 ///
 /// ```
 /// use rigtform::{Cvec3, Matrix4};
-/// use rigtform_render::interpolation::lerp_matrix;
+/// use rigtform_render::demo::interpolation::lerp_matrix;
 /// let a = Matrix4::from_scale(Cvec3::new(1.0, 1.0, 1.0));
 /// let b = Matrix4::from_scale(Cvec3::new(3.0, 3.0, 3.0));
 /// assert_eq!(lerp_matrix(a, b, 0.5), Matrix4::from_scale(Cvec3::new(2.0, 2.0, 2.0)));
@@ -54,7 +54,8 @@ impl Method {
     ///
     /// ```
     /// use rigtform::{Cvec3, Quat, RigTForm};
-    /// use rigtform_render::{interpolation::Method, Frame};
+    /// use rigtform_render::demo::interpolation::Method;
+    /// use rigtform_render::Frame;
     /// let k0 = RigTForm::IDENTITY;
     /// let k1 = RigTForm::new(Cvec3::X, Quat::from_rotation_z(1.0));
     /// let Frame::Rigid(mid) = Method::Slerp.frame(k0, k1, RigTForm::IDENTITY, 0.5) else {
