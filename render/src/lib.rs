@@ -31,7 +31,7 @@
 //!
 //! ```
 //! use rigtform::{Cvec3, Quat, RigTForm};
-//! use rigtform_render::{Camera, Cull, Draw, Frame, Mesh, Msaa, Scene, Settings};
+//! use rigtform_render::{Camera, Cull, Draw, Placement, Mesh, Msaa, Scene, Settings};
 //!
 //! let cube = Mesh::cube(1.0, [0.8, 0.3, 0.1]);
 //! let scene = Scene {
@@ -41,7 +41,7 @@
 //!     background: [0.5, 0.7, 0.9],
 //!     draws: vec![Draw {
 //!         mesh: &cube,
-//!         frame: Frame::Rigid(RigTForm::from_rotation(Quat::from_rotation_y(0.5))),
+//!         placement: Placement::Rigid(RigTForm::from_rotation(Quat::from_rotation_y(0.5))),
 //!         scale: Cvec3::new(1.0, 1.0, 1.0),
 //!         tint: [1.0; 3],
 //!     }],
@@ -73,5 +73,5 @@ pub use raster::{Cull, Triangle, MAX_COORDINATE};
 pub use samples::Msaa;
 pub use scene::{Camera, Draw, Scene, Settings, Stats};
 pub use shade::Lighting;
-pub use vertex::{transform_vertices, ClipVertex, Frame, Transforms, ATTRIBUTES};
+pub use vertex::{transform_vertices, ClipVertex, Placement, Transforms, ATTRIBUTES};
 pub use viewport::{to_screen, ScreenVertex};

@@ -1,7 +1,7 @@
 //! The demo: one pair of keyframes, interpolated side by side by the notes'
 //! three methods, and by Euler angles and slerp in a rotated world frame
 //! (left invariance), each panel seen by the same sky camera over a
-//! checkered ground, with the paths of the frame's origin and axis tips
+//! checkered ground, with the paths of the body's origin and axis tips
 //! marked.
 
 pub mod euler;
@@ -13,7 +13,7 @@ use crate::demo::interpolation::Method;
 use crate::image::{Image, GLYPH_SIZE};
 use crate::mesh::Mesh;
 use crate::scene::{Camera, Draw, Scene, Settings};
-use crate::vertex::Frame;
+use crate::vertex::Placement;
 
 /// Which panels a demo frame shows.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
@@ -112,7 +112,7 @@ const MARK_COLORS: [[f32; 3]; 4] = [
     [0.15, 0.75, 0.15],
     [0.15, 0.3, 0.95],
 ];
-/// Body-frame points whose paths are marked.
+/// Points of the body, in its object coordinates, whose paths are marked.
 const MARKED: [Cvec3; 4] = [
     Cvec3::ZERO,
     Cvec3::new(ARM, 0.0, 0.0),
@@ -128,7 +128,7 @@ pub const LABEL_BAR: u32 = 2 * GLYPH_SIZE + 8;
 
 impl Demo {
     /// The demo with the given panels, drawing `body` (by default the axes
-    /// body, [`Mesh::axes`]) at the animated frame.
+    /// body, [`Mesh::axes`]) where each panel's method places it.
     #[must_use]
     pub fn new(comparison: Comparison, body: Option<Mesh>) -> Self {
         Self {
@@ -162,11 +162,11 @@ impl Demo {
         }
     }
 
-    /// The object frame a panel draws at `alpha`.
+    /// Where a panel's method places the body at `alpha`.
     #[must_use]
-    pub fn object_frame(&self, panel: &Panel, alpha: f32) -> Frame {
+    pub fn body_placement(&self, panel: &Panel, alpha: f32) -> Placement {
         let (k0, k1) = self.keyframes;
-        panel.method.frame(k0, k1, panel.world, alpha)
+        panel.method.placement(k0, k1, panel.world, alpha)
     }
 
     /// The scene of one panel at `alpha`: ground, body, and path marks
@@ -175,15 +175,15 @@ impl Demo {
     pub fn scene(&self, panel: &Panel, alpha: f32) -> Scene<'_> {
         let mut draws = vec![Draw {
             mesh: &self.ground,
-            frame: Frame::Rigid(RigTForm::IDENTITY),
+            placement: Placement::Rigid(RigTForm::IDENTITY),
             scale: Cvec3::new(1.0, 1.0, 1.0),
             tint: [1.0; 3],
         }];
         for k in 0..=TRAIL_MARKS {
             let a = k as f32 / TRAIL_MARKS as f32;
-            let frame = self.object_frame(panel, a);
+            let placement = self.body_placement(panel, a);
             for (point, color) in MARKED.iter().zip(MARK_COLORS) {
-                let p = apply(frame, *point);
+                let p = apply(placement, *point);
                 // Marks already passed in colour, those ahead small and grey.
                 let (size, tint) = if a <= alpha + 1e-6 {
                     (1.0, color)
@@ -192,7 +192,7 @@ impl Demo {
                 };
                 draws.push(Draw {
                     mesh: &self.marker,
-                    frame: Frame::Rigid(RigTForm::from_translation(p)),
+                    placement: Placement::Rigid(RigTForm::from_translation(p)),
                     scale: Cvec3::new(size, size, size),
                     tint,
                 });
@@ -200,7 +200,7 @@ impl Demo {
         }
         draws.push(Draw {
             mesh: &self.body,
-            frame: self.object_frame(panel, alpha),
+            placement: self.body_placement(panel, alpha),
             scale: Cvec3::new(1.0, 1.0, 1.0),
             tint: [1.0; 3],
         });
@@ -223,9 +223,9 @@ impl Demo {
     /// ```
     #[must_use]
     pub fn caption(&self, panel: &Panel, alpha: f32) -> String {
-        let rotation = |p: &Panel| match self.object_frame(p, alpha) {
-            Frame::Rigid(r) => Some(r.r),
-            Frame::Matrix(_) => None,
+        let rotation = |p: &Panel| match self.body_placement(p, alpha) {
+            Placement::Rigid(r) => Some(r.r),
+            Placement::Matrix(_) => None,
         };
         let degrees_between = |a: &Panel, b: &Panel| {
             rotation(a)
@@ -240,8 +240,8 @@ impl Demo {
             };
             return format!("{:5.1} deg off world's", degrees_between(panel, &in_world));
         }
-        match (panel.method, self.object_frame(panel, alpha)) {
-            (Method::MatrixLerp, Frame::Matrix(m)) => {
+        match (panel.method, self.body_placement(panel, alpha)) {
+            (Method::MatrixLerp, Placement::Matrix(m)) => {
                 let [a, b, c, _] = m.cols.map(Cvec4::xyz);
                 format!("volume x{:.2}", a.dot(b.cross(c)))
             }
@@ -252,11 +252,11 @@ impl Demo {
                 };
                 format!("{:5.1} deg off slerp", degrees_between(panel, &slerp))
             }
-            (_, Frame::Rigid(f)) => {
+            (_, Placement::Rigid(f)) => {
                 let k0 = self.keyframes.0;
                 format!("turned {:5.1} deg", f.r.angle_to(k0.r).to_degrees())
             }
-            (_, Frame::Matrix(_)) => String::new(),
+            (_, Placement::Matrix(_)) => String::new(),
         }
     }
 
@@ -295,12 +295,12 @@ impl Demo {
     }
 }
 
-/// A frame's point `p` in world coordinates.
-fn apply(frame: Frame, p: Cvec3) -> Cvec3 {
+/// Where `placement` puts the object's point `p`, in world coordinates.
+fn apply(placement: Placement, p: Cvec3) -> Cvec3 {
     let p = Cvec4::from_point(p);
-    match frame {
-        Frame::Rigid(r) => (r * p).xyz(),
-        Frame::Matrix(m) => (m * p).xyz(),
+    match placement {
+        Placement::Rigid(r) => (r * p).xyz(),
+        Placement::Matrix(m) => (m * p).xyz(),
     }
 }
 
@@ -381,7 +381,7 @@ mod tests {
 
     /// The demo's slerp motion read back from the frames it renders has the
     /// notes' properties: the origin moves on a straight line at constant
-    /// speed, and the frame turns about one fixed axis at constant angular
+    /// speed, and the body turns about one fixed axis at constant angular
     /// velocity.
     #[test]
     fn demo_slerp_motion_is_straight_and_uniform() {
@@ -389,17 +389,17 @@ mod tests {
         let panel = demo.panels()[2];
         assert_eq!(panel.method, Method::Slerp);
         let n = 24;
-        let frames: Vec<RigTForm> = (0..n)
-            .map(|i| match demo.object_frame(&panel, Demo::alpha(i, n)) {
-                Frame::Rigid(r) => r,
-                Frame::Matrix(_) => panic!("slerp gives rigid frames"),
+        let placements: Vec<RigTForm> = (0..n)
+            .map(|i| match demo.body_placement(&panel, Demo::alpha(i, n)) {
+                Placement::Rigid(r) => r,
+                Placement::Matrix(_) => panic!("slerp places the body rigidly"),
             })
             .collect();
         let (k0, k1) = keyframes();
         let step = (k1.t - k0.t) * (1.0 / (n - 1) as f32);
         let (_, total) = (k1.r * k0.r.inv()).to_axis_angle();
         let (axis, _) = (k1.r * k0.r.inv()).to_axis_angle();
-        for pair in frames.windows(2) {
+        for pair in placements.windows(2) {
             let (a, b) = (pair[0], pair[1]);
             assert!(
                 (b.t - a.t - step).norm() < 1e-5,
@@ -412,8 +412,8 @@ mod tests {
             );
             assert!(turn_axis.dot(axis) > 1.0 - 1e-4, "one fixed axis");
         }
-        assert!(frames[0].r.angle_to(k0.r) < 1e-6);
-        assert!(frames[n as usize - 1].r.angle_to(k1.r) < 1e-5);
+        assert!(placements[0].r.angle_to(k0.r) < 1e-6);
+        assert!(placements[n as usize - 1].r.angle_to(k1.r) < 1e-5);
         assert!((total.to_degrees() - 150.0).abs() < 1e-3);
     }
 
