@@ -21,13 +21,21 @@
 //! 9. [`image`] and [`output`]: images, labels, PNG and GIF files written
 //!    atomically.
 //!
-//! The sample layout of a pixel ([`samples`]: how many, where) is shared
-//! by the rasterizer and the framebuffer.
+//! The sample layout of a pixel ([`samples`]: how many, where) is a module
+//! of its own, which the rasterizer, the fragment stage and the framebuffer
+//! use alike.
 //!
 //! [`scene`] runs the stages, in parallel with `rayon` and with the same
-//! bytes out whatever the number of threads. [`demo`] (with its
-//! [`euler`](demo::euler) angles and [`interpolation`](demo::interpolation)
-//! methods) builds the demo's animation and pictures.
+//! bytes out whatever the number of threads. [`demo`] builds the demo's
+//! animation and pictures on top of it: the staging every panel shares,
+//! the comparison of [`demo::bad_ideas`], its
+//! [`interpolation`](demo::interpolation) methods and
+//! [`euler`](demo::euler) angles.
+//!
+//! A *frame* is one picture of the animation (`frames/frame_000.png`).
+//! Where an object is in the world is its [`Placement`]; coordinate frames
+//! keep the notes' names: the world frame `w`, the eye frame
+//! `e = w eyeRbt`, an object frame `o = w objRbt`.
 //!
 //! ```
 //! use rigtform::{Cvec3, Quat, RigTForm};
