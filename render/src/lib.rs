@@ -39,7 +39,7 @@
 //!
 //! ```
 //! use rigtform::{Cvec3, Quat, RigTForm};
-//! use rigtform_render::{Camera, Cull, Draw, Placement, Mesh, Msaa, Scene, Settings};
+//! use rigtform_render::{Camera, Cull, Draw, Mesh, Msaa, Placement, Scene, Settings};
 //!
 //! let cube = Mesh::cube(1.0, [0.8, 0.3, 0.1]);
 //! let scene = Scene {

@@ -69,7 +69,7 @@ pub struct Transforms {
 }
 
 impl Transforms {
-    /// The MVM, NMVM and MVP of an object placed at `placement`, scaled by `scale`
+    /// The MVM, NMVM and MVP of an object at `placement` scaled by `scale`
     /// (applied first, on the right), seen from `eye`.
     ///
     /// `None` when the MVM is singular (a zero scale, or a lerped matrix that
@@ -111,7 +111,7 @@ impl Transforms {
 ///
 /// ```
 /// use rigtform::{Cvec3, Matrix4, RigTForm};
-/// use rigtform_render::{transform_vertices, Placement, Mesh, Transforms};
+/// use rigtform_render::{transform_vertices, Mesh, Placement, Transforms};
 /// let eye = RigTForm::from_translation(Cvec3::new(0.0, 0.0, 3.0));
 /// let proj = Matrix4::perspective(1.0, 1.0, 0.1, 10.0);
 /// let t = Transforms::new(eye, Placement::Rigid(RigTForm::IDENTITY), Cvec3::new(1.0, 1.0, 1.0), proj).unwrap();

@@ -103,8 +103,8 @@ mod tests {
         )
     }
 
-    fn apply(f: Placement, p: Cvec3) -> Cvec3 {
-        match f {
+    fn apply(placement: Placement, p: Cvec3) -> Cvec3 {
+        match placement {
             Placement::Rigid(r) => (r * Cvec4::from_point(p)).xyz(),
             Placement::Matrix(m) => (m * Cvec4::from_point(p)).xyz(),
         }
