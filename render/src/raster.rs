@@ -190,6 +190,7 @@ impl Triangle {
     /// }
     /// assert_eq!(count, 16);
     /// ```
+    #[inline]
     pub fn for_each_covered(
         &self,
         msaa: Msaa,
@@ -246,6 +247,7 @@ impl Triangle {
     /// t.for_each_covered(Msaa::Off, 0, 7, |_, _, _, e| assert_eq!(t.depth(&e[0]), 0.5));
     /// ```
     #[must_use]
+    #[inline]
     pub fn depth(&self, e: &[i64; 3]) -> f32 {
         let [z0, z1, z2] = self.z;
         let (l1, l2) = (e[1] as f32 * self.inv_area, e[2] as f32 * self.inv_area);
@@ -258,6 +260,7 @@ impl Triangle {
     /// centre when inside the triangle, otherwise the first covered sample
     /// (so attributes are never extrapolated).
     #[must_use]
+    #[inline]
     pub fn shading_weights(&self, x: u32, y: u32, mask: u32, e: &[[i64; 3]; 4]) -> [i64; 3] {
         let (cx, cy) = (i64::from(x) * ONE + ONE / 2, i64::from(y) * ONE + ONE / 2);
         let at_centre = self.edges.map(|edge| edge.at(cx, cy));
@@ -282,6 +285,7 @@ impl Triangle {
     /// assert!((a[0] - 2.0).abs() < 1e-6);
     /// ```
     #[must_use]
+    #[inline]
     pub fn interpolate(&self, weights: [i64; 3]) -> [f32; ATTRIBUTES] {
         let l = weights.map(|w| w as f32);
         let inv_w = l[0] * self.inv_w[0] + l[1] * self.inv_w[1] + l[2] * self.inv_w[2];
