@@ -78,7 +78,8 @@ fn render_euc(scene: &Scene, indices: &[Vec<u32>]) -> Buffer2d<u32> {
     let lighting = Lighting::new(scene.camera.eye, scene.lights, scene.intensity);
     let projection = scene.camera.projection(WIDTH as f32 / HEIGHT as f32);
     for (draw, idx) in scene.draws.iter().zip(indices) {
-        let Some(t) = Transforms::new(scene.camera.eye, draw.frame, draw.scale, projection) else {
+        let Some(t) = Transforms::new(scene.camera.eye, draw.placement, draw.scale, projection)
+        else {
             continue;
         };
         let pipeline = EucDraw {

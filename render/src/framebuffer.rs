@@ -4,7 +4,7 @@
 use std::sync::OnceLock;
 
 use crate::image::Image;
-use crate::raster::Msaa;
+use crate::samples::Msaa;
 
 /// Linear RGB colour and NDC depth for every sample of every pixel.
 ///

@@ -11,20 +11,35 @@
 //! 3. [`clip`]: the near plane (and a guard band), in clip space.
 //! 4. [`viewport`]: perspective divide and viewport.
 //! 5. [`raster`]: triangle setup, back-face culling, exact fixed-point edge
-//!    functions with a top-left fill rule, 4x MSAA coverage, the depth test,
-//!    perspective-correct attributes.
-//! 6. [`shade`]: per-pixel diffuse and specular lighting (the CS175 model).
-//! 7. [`framebuffer`]: colour and depth samples, bands for threads, resolve.
-//! 8. [`image`] and [`output`]: images, labels, PNG and GIF files written
+//!    functions with a top-left fill rule, 4x MSAA coverage, depth and
+//!    perspective-correct attributes across the triangle.
+//! 6. [`fragment`]: each covered pixel: the depth test per sample, one
+//!    shading, the colour stored in the samples that passed.
+//! 7. [`shade`]: the shading the fragment stage calls, per-pixel diffuse
+//!    and specular lighting (the CS175 model).
+//! 8. [`framebuffer`]: colour and depth samples, bands for threads, resolve.
+//! 9. [`image`] and [`output`]: images, labels, PNG and GIF files written
 //!    atomically.
 //!
+//! The sample layout of a pixel ([`samples`]: how many, where) is a module
+//! of its own, which the rasterizer, the fragment stage and the framebuffer
+//! use alike.
+//!
 //! [`scene`] runs the stages, in parallel with `rayon` and with the same
-//! bytes out whatever the number of threads. [`euler`],
-//! [`interpolation`] and [`demo`] build the demo's animation and pictures.
+//! bytes out whatever the number of threads. [`demo`] builds the demo's
+//! animation and pictures on top of it: the staging every panel shares,
+//! the comparison of [`demo::bad_ideas`], its
+//! [`interpolation`](demo::interpolation) methods and
+//! [`euler`](demo::euler) angles.
+//!
+//! A *frame* is one picture of the animation (`frames/frame_000.png`).
+//! Where an object is in the world is its [`Placement`]; coordinate frames
+//! keep the notes' names: the world frame `w`, the eye frame
+//! `e = w eyeRbt`, an object frame `o = w objRbt`.
 //!
 //! ```
 //! use rigtform::{Cvec3, Quat, RigTForm};
-//! use rigtform_render::{Camera, Cull, Draw, Frame, Mesh, Msaa, Scene, Settings};
+//! use rigtform_render::{Camera, Cull, Draw, Mesh, Msaa, Placement, Scene, Settings};
 //!
 //! let cube = Mesh::cube(1.0, [0.8, 0.3, 0.1]);
 //! let scene = Scene {
@@ -34,7 +49,7 @@
 //!     background: [0.5, 0.7, 0.9],
 //!     draws: vec![Draw {
 //!         mesh: &cube,
-//!         frame: Frame::Rigid(RigTForm::from_rotation(Quat::from_rotation_y(0.5))),
+//!         placement: Placement::Rigid(RigTForm::from_rotation(Quat::from_rotation_y(0.5))),
 //!         scale: Cvec3::new(1.0, 1.0, 1.0),
 //!         tint: [1.0; 3],
 //!     }],
@@ -45,25 +60,26 @@
 
 pub mod clip;
 pub mod demo;
-pub mod euler;
+pub mod fragment;
 pub mod framebuffer;
 pub mod image;
-pub mod interpolation;
 pub mod mesh;
 pub mod output;
 pub mod raster;
+pub mod samples;
 pub mod scene;
 pub mod shade;
 pub mod vertex;
 pub mod viewport;
 
 pub use clip::clip_triangle;
-pub use euler::Euler;
+pub use fragment::fill_triangle;
 pub use framebuffer::{linear_to_srgb8, Band, Framebuffer};
 pub use image::Image;
 pub use mesh::Mesh;
-pub use raster::{Cull, Msaa, Triangle, MAX_COORDINATE};
+pub use raster::{Cull, Triangle, MAX_COORDINATE};
+pub use samples::Msaa;
 pub use scene::{Camera, Draw, Scene, Settings, Stats};
 pub use shade::Lighting;
-pub use vertex::{transform_vertices, ClipVertex, Frame, Transforms, ATTRIBUTES};
+pub use vertex::{transform_vertices, ClipVertex, Placement, Transforms, ATTRIBUTES};
 pub use viewport::{to_screen, ScreenVertex};

@@ -160,7 +160,7 @@ impl Mesh {
         mesh
     }
 
-    /// The body that shows a frame: a grey cube at the origin and three arms
+    /// The body that shows its own axes: a grey cube at the origin and three arms
     /// along its +x (red), +y (green) and +z (blue) axes, `length` long.
     ///
     /// ```

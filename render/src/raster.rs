@@ -1,7 +1,9 @@
 //! Triangle setup and rasterization: back-face culling, edge functions in
-//! exact fixed-point arithmetic with a top-left fill rule, 4x multisample
-//! coverage, the per-sample depth test, and perspective-correct attribute
-//! interpolation for the one shading point of each pixel.
+//! exact fixed-point arithmetic with a top-left fill rule, the samples each
+//! triangle covers, and what is interpolated across it: the depth at each
+//! sample, and perspective-correct attributes at the one shading point of
+//! each pixel. The [`fragment`](crate::fragment) stage puts these together
+//! for every covered pixel.
 //!
 //! Vertex positions are snapped to 1/256 of a pixel. Edge functions are then
 //! evaluated exactly in 64-bit integers, so whether a sample lies inside,
@@ -10,11 +12,12 @@
 
 use core::cmp::Ordering;
 
-use crate::framebuffer::Band;
+use crate::samples::Msaa;
 use crate::vertex::ATTRIBUTES;
 use crate::viewport::ScreenVertex;
 
-/// Fixed-point fraction bits of screen positions: 1/256 of a pixel.
+/// Fixed-point fraction bits of screen positions: 1/256 of a pixel, the
+/// unit of the sample positions ([`Msaa::offsets`]) too.
 pub const SUBPIXEL_BITS: u32 = 8;
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 
@@ -22,42 +25,6 @@ const ONE: i64 = 1 << SUBPIXEL_BITS;
 /// 2^20, so that snapped coordinates stay below 2^28 and products of their
 /// differences in the edge functions below 2^58, far from `i64` overflow.
 pub const MAX_COORDINATE: f32 = 1_048_576.0;
-
-/// The sample pattern of each pixel.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Msaa {
-    /// One sample at the pixel centre.
-    Off,
-    /// Four samples in a rotated grid (the common 4x pattern), each pixel
-    /// shaded once and its colour stored in the covered samples that pass
-    /// the depth test.
-    #[default]
-    X4,
-}
-
-impl Msaa {
-    /// Samples per pixel.
-    ///
-    /// ```
-    /// use rigtform_render::Msaa;
-    /// assert_eq!(Msaa::X4.samples(), 4);
-    /// ```
-    #[must_use]
-    pub fn samples(self) -> usize {
-        self.offsets().len()
-    }
-
-    /// Sample positions inside the pixel, in 1/256 pixel from its top-left
-    /// corner.
-    #[must_use]
-    pub fn offsets(self) -> &'static [(i64, i64)] {
-        match self {
-            Msaa::Off => &[(128, 128)],
-            // (3/8, 1/8), (7/8, 3/8), (1/8, 5/8), (5/8, 7/8).
-            Msaa::X4 => &[(96, 32), (224, 96), (32, 160), (160, 224)],
-        }
-    }
-}
 
 /// Whether triangles facing away from the camera are drawn.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -113,6 +80,8 @@ pub struct Triangle {
     edges: [Edge; 3],
     /// Twice the area in subpixel units squared (positive).
     area: i64,
+    /// `1 / area`, which turns edge values into barycentric weights.
+    inv_area: f32,
     /// Inclusive pixel bounds, clamped to the viewport.
     x_min: u32,
     x_max: u32,
@@ -174,9 +143,11 @@ impl Triangle {
         if x_min > x_max || y_min > y_max {
             return None;
         }
+        let area = area.abs();
         Some(Self {
             edges,
-            area: area.abs(),
+            area,
+            inv_area: (1.0 / area as f64) as f32,
             x_min: x_min as u32,
             x_max: x_max as u32,
             y_min: y_min as u32,
@@ -219,6 +190,7 @@ impl Triangle {
     /// }
     /// assert_eq!(count, 16);
     /// ```
+    #[inline]
     pub fn for_each_covered(
         &self,
         msaa: Msaa,
@@ -263,53 +235,33 @@ impl Triangle {
         }
     }
 
-    /// Rasterizes the part of the triangle inside `band`: the depth test on
-    /// every covered sample, then, if any passed, `shade` once at the pixel
-    /// centre (or at the first covered sample when the centre is outside)
-    /// with perspective-correct attributes, its colour stored in the samples
-    /// that passed.
-    pub fn rasterize(
-        &self,
-        band: &mut Band<'_>,
-        msaa: Msaa,
-        shade: &impl Fn(&[f32; ATTRIBUTES]) -> [f32; 3],
-    ) {
-        let inv_area = (1.0 / self.area as f64) as f32;
+    /// The NDC depth at a sample from its edge values `e` (as
+    /// [`for_each_covered`](Self::for_each_covered) hands them over): depth
+    /// interpolates linearly on screen.
+    ///
+    /// ```
+    /// use rigtform_render::{Cull, Msaa, ScreenVertex, Triangle};
+    /// let v = |x, y, z| ScreenVertex { x, y, z, inv_w: 1.0, attrs_w: [0.0; 9] };
+    /// let t = Triangle::setup([v(0.0, 0.0, 0.5), v(0.0, 4.0, 0.5), v(4.0, 0.0, 0.5)], Cull::Back, 8, 8)
+    ///     .unwrap();
+    /// t.for_each_covered(Msaa::Off, 0, 7, |_, _, _, e| assert_eq!(t.depth(&e[0]), 0.5));
+    /// ```
+    #[must_use]
+    #[inline]
+    pub fn depth(&self, e: &[i64; 3]) -> f32 {
         let [z0, z1, z2] = self.z;
-        let y_end = band.y_end();
-        if y_end == 0 {
-            return;
-        }
-        self.for_each_covered(msaa, band.y0(), y_end - 1, |x, y, mask, e| {
-            let mut passed = 0u32;
-            for (s, es) in e.iter().enumerate().take(msaa.samples()) {
-                if mask & (1 << s) == 0 {
-                    continue;
-                }
-                let (l1, l2) = (es[1] as f32 * inv_area, es[2] as f32 * inv_area);
-                let z = z0 + (z1 - z0) * l1 + (z2 - z0) * l2;
-                if band.depth_test(x, y, s, z) {
-                    passed |= 1 << s;
-                }
-            }
-            if passed == 0 {
-                return;
-            }
-            let weights = self.shading_weights(x, y, mask, e);
-            let attrs = self.interpolate(weights);
-            let color = shade(&attrs);
-            for s in 0..msaa.samples() {
-                if passed & (1 << s) != 0 {
-                    band.set_color(x, y, s, color);
-                }
-            }
-        });
+        let (l1, l2) = (e[1] as f32 * self.inv_area, e[2] as f32 * self.inv_area);
+        z0 + (z1 - z0) * l1 + (z2 - z0) * l2
     }
 
     /// Barycentric weights (times twice the area) of the shading point of
-    /// pixel `(x, y)`: its centre when inside the triangle, otherwise the
-    /// first covered sample (so attributes are never extrapolated).
-    fn shading_weights(&self, x: u32, y: u32, mask: u32, e: &[[i64; 3]; 4]) -> [i64; 3] {
+    /// pixel `(x, y)`, from its coverage `mask` and edge values `e` (as
+    /// [`for_each_covered`](Self::for_each_covered) hands them over): its
+    /// centre when inside the triangle, otherwise the first covered sample
+    /// (so attributes are never extrapolated).
+    #[must_use]
+    #[inline]
+    pub fn shading_weights(&self, x: u32, y: u32, mask: u32, e: &[[i64; 3]; 4]) -> [i64; 3] {
         let (cx, cy) = (i64::from(x) * ONE + ONE / 2, i64::from(y) * ONE + ONE / 2);
         let at_centre = self.edges.map(|edge| edge.at(cx, cy));
         if at_centre.iter().all(|&v| v >= 0) {
@@ -322,7 +274,19 @@ impl Triangle {
     /// Perspective-correct attributes from barycentric weights (of any
     /// common scale): `a / w` and `1 / w` interpolate linearly on screen,
     /// and their ratio gives `a`, in which the scale cancels.
-    fn interpolate(&self, weights: [i64; 3]) -> [f32; ATTRIBUTES] {
+    ///
+    /// ```
+    /// use rigtform_render::{Cull, ScreenVertex, Triangle};
+    /// // a = 2 at every vertex, at depths w = 1, 1 and 4.
+    /// let v = |x, y, w: f32| ScreenVertex { x, y, z: 0.0, inv_w: 1.0 / w, attrs_w: [2.0 / w; 9] };
+    /// let t = Triangle::setup([v(0.0, 0.0, 1.0), v(0.0, 4.0, 1.0), v(4.0, 0.0, 4.0)], Cull::Back, 8, 8)
+    ///     .unwrap();
+    /// let a = t.interpolate([1, 1, 2]);
+    /// assert!((a[0] - 2.0).abs() < 1e-6);
+    /// ```
+    #[must_use]
+    #[inline]
+    pub fn interpolate(&self, weights: [i64; 3]) -> [f32; ATTRIBUTES] {
         let l = weights.map(|w| w as f32);
         let inv_w = l[0] * self.inv_w[0] + l[1] * self.inv_w[1] + l[2] * self.inv_w[2];
         let w = 1.0 / inv_w;
@@ -339,7 +303,6 @@ impl Triangle {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::framebuffer::Framebuffer;
 
     fn sv(x: f32, y: f32) -> ScreenVertex {
         ScreenVertex {
@@ -490,35 +453,6 @@ mod tests {
         }
         let edge = [sv(1.0, 1.0), sv(1.0, 9.0), sv(MAX_COORDINATE, 1.0)];
         assert!(Triangle::setup(edge, Cull::None, 10, 10).is_some());
-    }
-
-    fn flat(z: f32, corners: [(f32, f32); 3], color: f32) -> [ScreenVertex; 3] {
-        corners.map(|(x, y)| ScreenVertex {
-            x,
-            y,
-            z,
-            inv_w: 1.0,
-            attrs_w: [color; ATTRIBUTES],
-        })
-    }
-
-    #[test]
-    fn depth_test_keeps_the_nearer_triangle_in_either_order() {
-        let big = [(0.0, 0.0), (0.0, 8.0), (8.0, 0.0)];
-        let near = flat(-0.5, big, 1.0);
-        let far = flat(0.5, big, 0.25);
-        for order in [[near, far], [far, near]] {
-            let mut fb = Framebuffer::new(8, 8, Msaa::X4, [0.0; 3]);
-            for tri in order {
-                let t = Triangle::setup(tri, Cull::Back, 8, 8).unwrap();
-                for mut band in fb.bands_mut(3) {
-                    t.rasterize(&mut band, Msaa::X4, &|a| [a[0]; 3]);
-                }
-            }
-            let image = fb.resolve();
-            assert_eq!(image.pixel(1, 1), [255; 3]);
-            assert_eq!(fb.depth(1, 1, 0), -0.5);
-        }
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! A scene and its rendering: every draw through the vertex stage, clipping,
 //! the viewport and triangle setup, then the bands of the framebuffer
-//! rasterized in parallel with `rayon`, and the resolve.
+//! filled in parallel with `rayon` (rasterization and the fragment stage),
+//! and the resolve.
 //!
 //! The output does not depend on the number of threads: the triangles are
 //! set up in submission order, each band is filled by one thread drawing
@@ -11,12 +12,14 @@ use rayon::prelude::*;
 use rigtform::{Cvec3, Matrix4, RigTForm};
 
 use crate::clip::clip_triangle;
+use crate::fragment::fill_triangle;
 use crate::framebuffer::Framebuffer;
 use crate::image::Image;
 use crate::mesh::Mesh;
-use crate::raster::{Cull, Msaa, Triangle};
+use crate::raster::{Cull, Triangle};
+use crate::samples::Msaa;
 use crate::shade::Lighting;
-use crate::vertex::{transform_vertices, Frame, Transforms};
+use crate::vertex::{transform_vertices, Placement, Transforms};
 use crate::viewport::to_screen;
 
 /// Rows per band, the unit of parallel work.
@@ -82,9 +85,9 @@ impl Camera {
 pub struct Draw<'a> {
     /// The mesh, in object coordinates.
     pub mesh: &'a Mesh,
-    /// The object frame.
-    pub frame: Frame,
-    /// Scale applied in object coordinates, before the frame.
+    /// Where the mesh is placed in the world.
+    pub placement: Placement,
+    /// Scale applied in object coordinates, before the placement.
     pub scale: Cvec3,
     /// Multiplies the mesh's vertex colours.
     pub tint: [f32; 3],
@@ -136,7 +139,8 @@ impl Scene<'_> {
         self.draws
             .par_iter()
             .map(|draw| {
-                let Some(t) = Transforms::new(self.camera.eye, draw.frame, draw.scale, projection)
+                let Some(t) =
+                    Transforms::new(self.camera.eye, draw.placement, draw.scale, projection)
                 else {
                     return Vec::new();
                 };
@@ -204,7 +208,7 @@ impl Scene<'_> {
             .zip(image_rows)
             .for_each(|((band, bin), rows)| {
                 for t in bin {
-                    t.rasterize(band, settings.msaa, &shade);
+                    fill_triangle(t, band, settings.msaa, &shade);
                 }
                 if let Some(rows) = rows {
                     band.resolve_into(rows);
@@ -279,7 +283,7 @@ mod tests {
             background: [0.0; 3],
             draws: vec![Draw {
                 mesh: &marker,
-                frame: Frame::Rigid(RigTForm::from_translation(Cvec3::new(2.0, 1.0, 0.0))),
+                placement: Placement::Rigid(RigTForm::from_translation(Cvec3::new(2.0, 1.0, 0.0))),
                 scale: Cvec3::new(1.0, 1.0, 1.0),
                 tint: [1.0; 3],
             }],
@@ -309,7 +313,7 @@ mod tests {
             background: [0.0; 3],
             draws: vec![Draw {
                 mesh: &ground,
-                frame: Frame::Rigid(RigTForm::IDENTITY),
+                placement: Placement::Rigid(RigTForm::IDENTITY),
                 scale: Cvec3::new(1.0, 1.0, 1.0),
                 tint: [1.0; 3],
             }],
@@ -330,7 +334,7 @@ mod tests {
         let draws = (0..6)
             .map(|i| Draw {
                 mesh: if i % 2 == 0 { &body } else { &sphere },
-                frame: Frame::Rigid(RigTForm::new(
+                placement: Placement::Rigid(RigTForm::new(
                     Cvec3::new(i as f32 * 0.4 - 1.0, 0.0, -(i as f32) * 0.3),
                     Quat::from_axis_angle(Cvec3::new(1.0, 2.0, 0.5), i as f32),
                 )),

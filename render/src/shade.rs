@@ -54,6 +54,7 @@ impl Lighting {
     /// assert!(c[0] > 0.5);
     /// ```
     #[must_use]
+    #[inline]
     pub fn shade(&self, a: &[f32; ATTRIBUTES]) -> [f32; 3] {
         let p = Cvec3::new(a[0], a[1], a[2]);
         let n = unit(Cvec3::new(a[3], a[4], a[5]));

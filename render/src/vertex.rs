@@ -37,11 +37,21 @@ impl ClipVertex {
     }
 }
 
-/// Where an object is: a rigid body transform (the notes' way), or a general
-/// 4x4 matrix (only for showing what lerping matrices does).
+/// Where an object is placed in the world: by a rigid body transform (the
+/// notes' way), or by a general 4x4 matrix (only for showing what lerping
+/// matrices does).
+///
+/// ```
+/// use rigtform::{Cvec3, Cvec4, Matrix4, RigTForm};
+/// use rigtform_render::Placement;
+/// let rigid = Placement::Rigid(RigTForm::from_translation(Cvec3::X));
+/// let matrix = Placement::Matrix(Matrix4::from_translation(Cvec3::X));
+/// let (Placement::Rigid(r), Placement::Matrix(m)) = (rigid, matrix) else { unreachable!() };
+/// assert_eq!(r * Cvec4::from_point(Cvec3::ZERO), m * Cvec4::from_point(Cvec3::ZERO));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Frame {
-    /// An object frame `o = w objRbt`.
+pub enum Placement {
+    /// The object's `objRbt`: its object frame is `o = w objRbt`.
     Rigid(RigTForm),
     /// An object matrix that need not be rigid: `o = w M`.
     Matrix(Matrix4),
@@ -59,7 +69,7 @@ pub struct Transforms {
 }
 
 impl Transforms {
-    /// The MVM, NMVM and MVP of an object at `frame` scaled by `scale`
+    /// The MVM, NMVM and MVP of an object at `placement` scaled by `scale`
     /// (applied first, on the right), seen from `eye`.
     ///
     /// `None` when the MVM is singular (a zero scale, or a lerped matrix that
@@ -67,19 +77,24 @@ impl Transforms {
     ///
     /// ```
     /// use rigtform::{Cvec3, Cvec4, Matrix4, RigTForm};
-    /// use rigtform_render::{Frame, Transforms};
+    /// use rigtform_render::{Placement, Transforms};
     /// let eye = RigTForm::from_translation(Cvec3::new(0.0, 0.0, 5.0));
-    /// let obj = Frame::Rigid(RigTForm::from_translation(Cvec3::X));
+    /// let obj = Placement::Rigid(RigTForm::from_translation(Cvec3::X));
     /// let proj = Matrix4::perspective(1.0, 1.0, 0.1, 100.0);
     /// let t = Transforms::new(eye, obj, Cvec3::new(2.0, 2.0, 2.0), proj).unwrap();
     /// let p = t.mvm * Cvec4::from_point(Cvec3::X);
     /// assert_eq!(p, Cvec4::new(3.0, 0.0, -5.0, 1.0));
     /// ```
     #[must_use]
-    pub fn new(eye: RigTForm, frame: Frame, scale: Cvec3, projection: Matrix4) -> Option<Self> {
-        let object_to_eye = match frame {
-            Frame::Rigid(obj) => Matrix4::from(eye.inv() * obj),
-            Frame::Matrix(m) => Matrix4::from(eye.inv()) * m,
+    pub fn new(
+        eye: RigTForm,
+        placement: Placement,
+        scale: Cvec3,
+        projection: Matrix4,
+    ) -> Option<Self> {
+        let object_to_eye = match placement {
+            Placement::Rigid(obj) => Matrix4::from(eye.inv() * obj),
+            Placement::Matrix(m) => Matrix4::from(eye.inv()) * m,
         };
         let mvm = object_to_eye * Matrix4::from_scale(scale);
         let nmvm = mvm.normal_matrix()?;
@@ -96,10 +111,10 @@ impl Transforms {
 ///
 /// ```
 /// use rigtform::{Cvec3, Matrix4, RigTForm};
-/// use rigtform_render::{transform_vertices, Frame, Mesh, Transforms};
+/// use rigtform_render::{transform_vertices, Mesh, Placement, Transforms};
 /// let eye = RigTForm::from_translation(Cvec3::new(0.0, 0.0, 3.0));
 /// let proj = Matrix4::perspective(1.0, 1.0, 0.1, 10.0);
-/// let t = Transforms::new(eye, Frame::Rigid(RigTForm::IDENTITY), Cvec3::new(1.0, 1.0, 1.0), proj).unwrap();
+/// let t = Transforms::new(eye, Placement::Rigid(RigTForm::IDENTITY), Cvec3::new(1.0, 1.0, 1.0), proj).unwrap();
 /// let v = transform_vertices(&Mesh::cube(1.0, [1.0; 3]), &t, [1.0; 3]);
 /// assert_eq!(v.len(), 24);
 /// assert!(v.iter().all(|c| c.clip.w > 2.0)); // w is the distance in front of the eye
@@ -140,7 +155,7 @@ mod tests {
     #[test]
     fn normals_stay_perpendicular_under_non_uniform_scale() {
         let eye = RigTForm::IDENTITY;
-        let obj = Frame::Rigid(RigTForm::from_rotation(Quat::from_rotation_z(0.7)));
+        let obj = Placement::Rigid(RigTForm::from_rotation(Quat::from_rotation_z(0.7)));
         let scale = Cvec3::new(3.0, 0.5, 1.0);
         let proj = Matrix4::perspective(1.0, 1.0, 0.1, 10.0);
         let t = Transforms::new(eye, obj, scale, proj).unwrap();
@@ -167,7 +182,7 @@ mod tests {
         let proj = Matrix4::perspective(1.0, 1.0, 0.1, 10.0);
         assert!(Transforms::new(
             RigTForm::IDENTITY,
-            Frame::Matrix(flat),
+            Placement::Matrix(flat),
             Cvec3::new(1.0, 1.0, 1.0),
             proj
         )
@@ -180,7 +195,7 @@ mod tests {
         let proj = Matrix4::perspective(1.0, 1.0, 0.1, 10.0);
         let t = Transforms::new(
             RigTForm::IDENTITY,
-            Frame::Rigid(RigTForm::IDENTITY),
+            Placement::Rigid(RigTForm::IDENTITY),
             Cvec3::new(1.0, 1.0, 1.0),
             proj,
         )

@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 use rigtform::{Cvec3, Quat, RigTForm};
 use rigtform_render::demo::{Comparison, Demo};
 use rigtform_render::output::{read_png, write_png};
-use rigtform_render::{Camera, Cull, Draw, Frame, Image, Mesh, Msaa, Scene, Settings};
+use rigtform_render::{Camera, Cull, Draw, Image, Mesh, Msaa, Placement, Scene, Settings};
 
 /// Largest difference of one channel, in 8-bit steps.
 const MAX_CHANNEL_DIFF: u8 = 24;
@@ -104,7 +104,7 @@ fn golden_shapes_without_antialiasing() {
     let cube = Mesh::cube(1.0, [0.9, 0.4, 0.1]);
     let sphere = Mesh::sphere(0.6, 20, 10, [0.2, 0.5, 0.9]);
     let ground = Mesh::ground([-3.0, 3.0], [-3.0, 3.0], 6, [[0.3; 3], [0.6; 3]]);
-    let rigid = |t: Cvec3, r: Quat| Frame::Rigid(RigTForm::new(t, r));
+    let rigid = |t: Cvec3, r: Quat| Placement::Rigid(RigTForm::new(t, r));
     let one = Cvec3::new(1.0, 1.0, 1.0);
     let scene = Scene {
         camera: Camera::looking_at(Cvec3::new(1.0, 2.5, 4.0), Cvec3::new(0.0, 0.4, 0.0), 0.9),
@@ -114,19 +114,19 @@ fn golden_shapes_without_antialiasing() {
         draws: vec![
             Draw {
                 mesh: &ground,
-                frame: rigid(Cvec3::ZERO, Quat::IDENTITY),
+                placement: rigid(Cvec3::ZERO, Quat::IDENTITY),
                 scale: one,
                 tint: [1.0; 3],
             },
             Draw {
                 mesh: &cube,
-                frame: rigid(Cvec3::new(-0.6, 0.5, 0.0), Quat::from_rotation_y(0.6)),
+                placement: rigid(Cvec3::new(-0.6, 0.5, 0.0), Quat::from_rotation_y(0.6)),
                 scale: Cvec3::new(1.0, 1.0, 0.5),
                 tint: [1.0; 3],
             },
             Draw {
                 mesh: &sphere,
-                frame: rigid(Cvec3::new(0.7, 0.6, 0.3), Quat::IDENTITY),
+                placement: rigid(Cvec3::new(0.7, 0.6, 0.3), Quat::IDENTITY),
                 scale: one,
                 tint: [1.0; 3],
             },

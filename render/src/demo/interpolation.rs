@@ -9,21 +9,21 @@
 
 use rigtform::{Matrix4, RigTForm};
 
-use crate::euler::Euler;
-use crate::vertex::Frame;
+use crate::demo::euler::Euler;
+use crate::vertex::Placement;
 
 /// An interpolation method.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Method {
     /// `(1 - alpha) M0 + alpha M1` on the 4x4 matrices: each basis vector
-    /// moves on a straight line, so the frame shears and shrinks.
+    /// moves on a straight line, so the object shears and shrinks.
     MatrixLerp,
     /// Translation lerped, rotation factored into Euler angles
     /// ([`Euler`]) and each angle lerped: an unnatural path that depends on
     /// the world frame.
     EulerLerp,
     /// [`RigTForm::interpolate`]: the origin on a straight line at constant
-    /// speed, the frame turning about one axis at constant angular velocity.
+    /// speed, the object turning about one axis at constant angular velocity.
     Slerp,
 }
 
@@ -31,7 +31,7 @@ pub enum Method {
 ///
 /// ```
 /// use rigtform::{Cvec3, Matrix4};
-/// use rigtform_render::interpolation::lerp_matrix;
+/// use rigtform_render::demo::interpolation::lerp_matrix;
 /// let a = Matrix4::from_scale(Cvec3::new(1.0, 1.0, 1.0));
 /// let b = Matrix4::from_scale(Cvec3::new(3.0, 3.0, 3.0));
 /// assert_eq!(lerp_matrix(a, b, 0.5), Matrix4::from_scale(Cvec3::new(2.0, 2.0, 2.0)));
@@ -49,34 +49,35 @@ pub fn lerp_matrix(a: Matrix4, b: Matrix4, alpha: f32) -> Matrix4 {
 }
 
 impl Method {
-    /// The object frame at `alpha` between keyframes `k0` and `k1`,
+    /// Where the object is at `alpha` between keyframes `k0` and `k1`,
     /// interpolated in the world frame `w' = w world` and expressed in `w`.
     ///
     /// ```
     /// use rigtform::{Cvec3, Quat, RigTForm};
-    /// use rigtform_render::{interpolation::Method, Frame};
+    /// use rigtform_render::demo::interpolation::Method;
+    /// use rigtform_render::Placement;
     /// let k0 = RigTForm::IDENTITY;
     /// let k1 = RigTForm::new(Cvec3::X, Quat::from_rotation_z(1.0));
-    /// let Frame::Rigid(mid) = Method::Slerp.frame(k0, k1, RigTForm::IDENTITY, 0.5) else {
+    /// let Placement::Rigid(mid) = Method::Slerp.placement(k0, k1, RigTForm::IDENTITY, 0.5) else {
     ///     unreachable!()
     /// };
     /// assert!(mid.r.angle_to(Quat::from_rotation_z(0.5)) < 1e-6);
     /// ```
     #[must_use]
-    pub fn frame(self, k0: RigTForm, k1: RigTForm, world: RigTForm, alpha: f32) -> Frame {
+    pub fn placement(self, k0: RigTForm, k1: RigTForm, world: RigTForm, alpha: f32) -> Placement {
         let to_world = world.inv();
         let (a, b) = (to_world * k0, to_world * k1);
         match self {
-            Method::MatrixLerp => Frame::Matrix(
+            Method::MatrixLerp => Placement::Matrix(
                 Matrix4::from(world) * lerp_matrix(Matrix4::from(a), Matrix4::from(b), alpha),
             ),
             Method::EulerLerp => {
                 let r = Euler::from_quat(a.r)
                     .lerp(Euler::from_quat(b.r), alpha)
                     .to_quat();
-                Frame::Rigid(world * RigTForm::new(a.t.lerp(b.t, alpha), r))
+                Placement::Rigid(world * RigTForm::new(a.t.lerp(b.t, alpha), r))
             }
-            Method::Slerp => Frame::Rigid(world * a.interpolate(b, alpha)),
+            Method::Slerp => Placement::Rigid(world * a.interpolate(b, alpha)),
         }
     }
 }
@@ -102,16 +103,16 @@ mod tests {
         )
     }
 
-    fn apply(f: Frame, p: Cvec3) -> Cvec3 {
-        match f {
-            Frame::Rigid(r) => (r * Cvec4::from_point(p)).xyz(),
-            Frame::Matrix(m) => (m * Cvec4::from_point(p)).xyz(),
+    fn apply(placement: Placement, p: Cvec3) -> Cvec3 {
+        match placement {
+            Placement::Rigid(r) => (r * Cvec4::from_point(p)).xyz(),
+            Placement::Matrix(m) => (m * Cvec4::from_point(p)).xyz(),
         }
     }
 
-    /// The largest distance between where the two frames put the corners
+    /// The largest distance between where the two placements put the corners
     /// of the unit cube.
-    fn gap(a: Frame, b: Frame) -> f32 {
+    fn gap(a: Placement, b: Placement) -> f32 {
         (0..8)
             .map(|i| Cvec3::new((i & 1) as f32, ((i >> 1) & 1) as f32, ((i >> 2) & 1) as f32))
             .map(|p| (apply(a, p) - apply(b, p)).norm())
@@ -124,11 +125,11 @@ mod tests {
         for m in [Method::MatrixLerp, Method::EulerLerp, Method::Slerp] {
             for w in [RigTForm::IDENTITY, world()] {
                 assert!(
-                    gap(m.frame(k0, k1, w, 0.0), Frame::Rigid(k0)) < 1e-4,
+                    gap(m.placement(k0, k1, w, 0.0), Placement::Rigid(k0)) < 1e-4,
                     "{m:?}"
                 );
                 assert!(
-                    gap(m.frame(k0, k1, w, 1.0), Frame::Rigid(k1)) < 1e-4,
+                    gap(m.placement(k0, k1, w, 1.0), Placement::Rigid(k1)) < 1e-4,
                     "{m:?}"
                 );
             }
@@ -139,8 +140,8 @@ mod tests {
     fn slerp_is_left_invariant_and_euler_lerp_is_not() {
         let (k0, k1) = keyframes();
         for alpha in [0.25, 0.5, 0.75] {
-            let slerp = |w| Method::Slerp.frame(k0, k1, w, alpha);
-            let euler = |w| Method::EulerLerp.frame(k0, k1, w, alpha);
+            let slerp = |w| Method::Slerp.placement(k0, k1, w, alpha);
+            let euler = |w| Method::EulerLerp.placement(k0, k1, w, alpha);
             assert!(gap(slerp(RigTForm::IDENTITY), slerp(world())) < 1e-4);
             assert!(gap(euler(RigTForm::IDENTITY), euler(world())) > 0.1);
         }
@@ -149,7 +150,8 @@ mod tests {
     #[test]
     fn matrix_lerp_shrinks_the_object_and_slerp_keeps_it_rigid() {
         let (k0, k1) = keyframes();
-        let Frame::Matrix(m) = Method::MatrixLerp.frame(k0, k1, RigTForm::IDENTITY, 0.5) else {
+        let Placement::Matrix(m) = Method::MatrixLerp.placement(k0, k1, RigTForm::IDENTITY, 0.5)
+        else {
             panic!("matrix lerp gives a matrix");
         };
         // The 3x3 block's determinant is the volume scale.
@@ -162,7 +164,7 @@ mod tests {
             (det - expected).abs() < 1e-3,
             "det {det}, expected {expected}"
         );
-        let Frame::Rigid(r) = Method::Slerp.frame(k0, k1, RigTForm::IDENTITY, 0.5) else {
+        let Placement::Rigid(r) = Method::Slerp.placement(k0, k1, RigTForm::IDENTITY, 0.5) else {
             panic!("slerp gives a rigid body transform");
         };
         assert!((r.r.norm() - 1.0).abs() < 1e-6);
@@ -171,9 +173,9 @@ mod tests {
     #[test]
     fn euler_lerp_path_differs_from_slerp() {
         let (k0, k1) = keyframes();
-        let (Frame::Rigid(e), Frame::Rigid(s)) = (
-            Method::EulerLerp.frame(k0, k1, RigTForm::IDENTITY, 0.5),
-            Method::Slerp.frame(k0, k1, RigTForm::IDENTITY, 0.5),
+        let (Placement::Rigid(e), Placement::Rigid(s)) = (
+            Method::EulerLerp.placement(k0, k1, RigTForm::IDENTITY, 0.5),
+            Method::Slerp.placement(k0, k1, RigTForm::IDENTITY, 0.5),
         ) else {
             panic!("both are rigid");
         };

@@ -1,103 +1,42 @@
-//! The demo: one pair of keyframes, interpolated side by side by the notes'
-//! three methods, and by Euler angles and slerp in a rotated world frame
-//! (left invariance), each panel seen by the same sky camera over a
-//! checkered ground, with the paths of the frame's origin and axis tips
-//! marked.
+//! The demo the binary renders: a comparison of ways to interpolate
+//! keyframes, panel by panel, and the animation made of its frames.
+//!
+//! This file holds what every panel shares: the stage (the same sky camera
+//! over a checkered ground, two lights), the body at the place the panel
+//! gives it, the paths of its origin and axis tips marked, an animation
+//! frame (the panels side by side under label bars), the contact sheet,
+//! the GIF's sequence, and loading an OBJ file as the body. Of a panel it
+//! uses the title, [`Panel::placement`] and [`Panel::caption`].
+//!
+//! - [`bad_ideas`]: the comparison, its keyframes, panels and captions:
+//!   slerp against the notes' bad ideas, and in a turned world frame.
+//! - [`interpolation`]: the methods the panels use.
+//! - [`euler`]: Euler angles, for the Euler lerp.
 
-use rigtform::{Cvec3, Cvec4, Quat, RigTForm};
+pub mod bad_ideas;
+pub mod euler;
+pub mod interpolation;
+
+pub use bad_ideas::{keyframes, rotated_world, Comparison, Panel};
+
+use rigtform::{Cvec3, Cvec4, RigTForm};
 
 use crate::image::{Image, GLYPH_SIZE};
-use crate::interpolation::Method;
 use crate::mesh::Mesh;
 use crate::scene::{Camera, Draw, Scene, Settings};
-use crate::vertex::Frame;
-
-/// Which panels a demo frame shows.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
-pub enum Comparison {
-    /// All five panels.
-    #[default]
-    All,
-    /// Matrix lerp, Euler lerp and slerp.
-    Interpolation,
-    /// Euler lerp and slerp, each in the world frame and in a rotated one.
-    Invariance,
-    /// Slerp alone.
-    Slerp,
-}
-
-/// One panel: a method, and the world frame it interpolates in.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Panel {
-    /// The title drawn above the panel.
-    pub title: &'static str,
-    /// The interpolation method.
-    pub method: Method,
-    /// `G` of the world frame `w' = w G` the method works in.
-    pub world: RigTForm,
-}
-
-/// The rotated world frame of the invariance panels: tipped 90 degrees
-/// about the z axis, then turned 60 degrees about the new vertical.
-#[must_use]
-pub fn rotated_world() -> RigTForm {
-    RigTForm::from_rotation(
-        Quat::from_rotation_z(core::f32::consts::FRAC_PI_2) * Quat::from_rotation_x(1.0),
-    )
-}
-
-impl Comparison {
-    /// The panels, left to right.
-    #[must_use]
-    pub fn panels(self) -> Vec<Panel> {
-        let panel = |title, method, world| Panel {
-            title,
-            method,
-            world,
-        };
-        let (w, g) = (RigTForm::IDENTITY, rotated_world());
-        let matrix = panel("MATRIX LERP", Method::MatrixLerp, w);
-        let euler = panel("EULER LERP", Method::EulerLerp, w);
-        let slerp = panel("SLERP", Method::Slerp, w);
-        let euler_g = panel("EULER, WORLD TURNED", Method::EulerLerp, g);
-        let slerp_g = panel("SLERP, WORLD TURNED", Method::Slerp, g);
-        match self {
-            Comparison::All => vec![matrix, euler, slerp, euler_g, slerp_g],
-            Comparison::Interpolation => vec![matrix, euler, slerp],
-            Comparison::Invariance => vec![euler, euler_g, slerp, slerp_g],
-            Comparison::Slerp => vec![slerp],
-        }
-    }
-}
+use crate::vertex::Placement;
 
 /// Length of the body's axes, and so where the tips are marked.
 pub const ARM: f32 = 1.1;
 /// Marks along each path, from `alpha = 0` to 1.
 pub const TRAIL_MARKS: u32 = 16;
 
-/// The two keyframes: the second is moved across the ground and turned a
-/// further 150 degrees about a tilted axis.
-///
-/// ```
-/// let (k0, k1) = rigtform_render::demo::keyframes();
-/// assert!((k0.r.angle_to(k1.r).to_degrees() - 150.0).abs() < 1e-3);
-/// ```
-#[must_use]
-pub fn keyframes() -> (RigTForm, RigTForm) {
-    let r0 = Quat::from_rotation_y(0.4) * Quat::from_rotation_x(-0.25);
-    let k0 = RigTForm::new(Cvec3::new(-1.9, 1.2, 0.3), r0);
-    let turn = Quat::from_axis_angle(Cvec3::new(0.3, 1.0, 0.9), 150f32.to_radians());
-    let k1 = RigTForm::new(Cvec3::new(1.9, 1.2, -0.6), turn * r0);
-    (k0, k1)
-}
-
-/// The demo: its meshes, keyframes, panels and camera.
+/// The demo: its meshes, panels and camera.
 #[derive(Clone, Debug)]
 pub struct Demo {
     body: Mesh,
     ground: Mesh,
     marker: Mesh,
-    keyframes: (RigTForm, RigTForm),
     panels: Vec<Panel>,
     camera: Camera,
 }
@@ -109,7 +48,7 @@ const MARK_COLORS: [[f32; 3]; 4] = [
     [0.15, 0.75, 0.15],
     [0.15, 0.3, 0.95],
 ];
-/// Body-frame points whose paths are marked.
+/// Points of the body, in its object coordinates, whose paths are marked.
 const MARKED: [Cvec3; 4] = [
     Cvec3::ZERO,
     Cvec3::new(ARM, 0.0, 0.0),
@@ -124,8 +63,8 @@ const BAR: [u8; 3] = [24, 24, 28];
 pub const LABEL_BAR: u32 = 2 * GLYPH_SIZE + 8;
 
 impl Demo {
-    /// The demo with the given panels, drawing `body` (by default the axes
-    /// body, [`Mesh::axes`]) at the animated frame.
+    /// The demo with the panels of `comparison`, drawing `body` (by default
+    /// the axes body, [`Mesh::axes`]) where each panel places it.
     #[must_use]
     pub fn new(comparison: Comparison, body: Option<Mesh>) -> Self {
         Self {
@@ -137,7 +76,6 @@ impl Demo {
                 [[0.32, 0.36, 0.3], [0.5, 0.54, 0.46]],
             ),
             marker: Mesh::sphere(0.07, 10, 6, [1.0; 3]),
-            keyframes: keyframes(),
             panels: comparison.panels(),
             camera: Camera::looking_at(Cvec3::new(0.0, 3.0, 5.4), Cvec3::new(0.0, 1.1, -0.2), 0.8),
         }
@@ -159,28 +97,21 @@ impl Demo {
         }
     }
 
-    /// The object frame a panel draws at `alpha`.
-    #[must_use]
-    pub fn object_frame(&self, panel: &Panel, alpha: f32) -> Frame {
-        let (k0, k1) = self.keyframes;
-        panel.method.frame(k0, k1, panel.world, alpha)
-    }
-
     /// The scene of one panel at `alpha`: ground, body, and path marks
     /// (coloured up to `alpha`, grey beyond).
     #[must_use]
     pub fn scene(&self, panel: &Panel, alpha: f32) -> Scene<'_> {
         let mut draws = vec![Draw {
             mesh: &self.ground,
-            frame: Frame::Rigid(RigTForm::IDENTITY),
+            placement: Placement::Rigid(RigTForm::IDENTITY),
             scale: Cvec3::new(1.0, 1.0, 1.0),
             tint: [1.0; 3],
         }];
         for k in 0..=TRAIL_MARKS {
             let a = k as f32 / TRAIL_MARKS as f32;
-            let frame = self.object_frame(panel, a);
+            let placement = panel.placement(a);
             for (point, color) in MARKED.iter().zip(MARK_COLORS) {
-                let p = apply(frame, *point);
+                let p = apply(placement, *point);
                 // Marks already passed in colour, those ahead small and grey.
                 let (size, tint) = if a <= alpha + 1e-6 {
                     (1.0, color)
@@ -189,7 +120,7 @@ impl Demo {
                 };
                 draws.push(Draw {
                     mesh: &self.marker,
-                    frame: Frame::Rigid(RigTForm::from_translation(p)),
+                    placement: Placement::Rigid(RigTForm::from_translation(p)),
                     scale: Cvec3::new(size, size, size),
                     tint,
                 });
@@ -197,7 +128,7 @@ impl Demo {
         }
         draws.push(Draw {
             mesh: &self.body,
-            frame: self.object_frame(panel, alpha),
+            placement: panel.placement(alpha),
             scale: Cvec3::new(1.0, 1.0, 1.0),
             tint: [1.0; 3],
         });
@@ -207,53 +138,6 @@ impl Demo {
             intensity: [0.75, 0.3],
             background: [0.42, 0.6, 0.85],
             draws,
-        }
-    }
-
-    /// The second label line of a panel at `alpha`: a measure of what the
-    /// method does there.
-    ///
-    /// ```
-    /// use rigtform_render::demo::{Comparison, Demo};
-    /// let demo = Demo::new(Comparison::Interpolation, None);
-    /// assert_eq!(demo.caption(&demo.panels()[2], 1.0), "turned 150.0 deg");
-    /// ```
-    #[must_use]
-    pub fn caption(&self, panel: &Panel, alpha: f32) -> String {
-        let rotation = |p: &Panel| match self.object_frame(p, alpha) {
-            Frame::Rigid(r) => Some(r.r),
-            Frame::Matrix(_) => None,
-        };
-        let degrees_between = |a: &Panel, b: &Panel| {
-            rotation(a)
-                .zip(rotation(b))
-                .map_or(0.0, |(a, b)| a.angle_to(b).to_degrees())
-        };
-        if panel.world != RigTForm::IDENTITY {
-            // The same method in the untouched world frame.
-            let in_world = Panel {
-                world: RigTForm::IDENTITY,
-                ..*panel
-            };
-            return format!("{:5.1} deg off world's", degrees_between(panel, &in_world));
-        }
-        match (panel.method, self.object_frame(panel, alpha)) {
-            (Method::MatrixLerp, Frame::Matrix(m)) => {
-                let [a, b, c, _] = m.cols.map(Cvec4::xyz);
-                format!("volume x{:.2}", a.dot(b.cross(c)))
-            }
-            (Method::EulerLerp, _) => {
-                let slerp = Panel {
-                    method: Method::Slerp,
-                    ..*panel
-                };
-                format!("{:5.1} deg off slerp", degrees_between(panel, &slerp))
-            }
-            (_, Frame::Rigid(f)) => {
-                let k0 = self.keyframes.0;
-                format!("turned {:5.1} deg", f.r.angle_to(k0.r).to_degrees())
-            }
-            (_, Frame::Matrix(_)) => String::new(),
         }
     }
 
@@ -284,7 +168,7 @@ impl Demo {
             // Labels are cut at the panel's edge.
             let mut label = Image::new(w, LABEL_BAR, BAR);
             label.draw_text(4, 3, panel.title, 1, [240, 240, 240]);
-            let caption = self.caption(panel, alpha);
+            let caption = panel.caption(alpha);
             label.draw_text(4, 5 + i64::from(GLYPH_SIZE), &caption, 1, [200, 200, 160]);
             frame.blit(&label, x, 0);
         }
@@ -292,12 +176,12 @@ impl Demo {
     }
 }
 
-/// A frame's point `p` in world coordinates.
-fn apply(frame: Frame, p: Cvec3) -> Cvec3 {
+/// Where `placement` puts the object's point `p`, in world coordinates.
+fn apply(placement: Placement, p: Cvec3) -> Cvec3 {
     let p = Cvec4::from_point(p);
-    match frame {
-        Frame::Rigid(r) => (r * p).xyz(),
-        Frame::Matrix(m) => (m * p).xyz(),
+    match placement {
+        Placement::Rigid(r) => (r * p).xyz(),
+        Placement::Matrix(m) => (m * p).xyz(),
     }
 }
 
@@ -374,11 +258,12 @@ pub fn contact_sheet(rows: &[(f32, &Image)]) -> Image {
 
 #[cfg(test)]
 mod tests {
+    use super::interpolation::Method;
     use super::*;
 
     /// The demo's slerp motion read back from the frames it renders has the
     /// notes' properties: the origin moves on a straight line at constant
-    /// speed, and the frame turns about one fixed axis at constant angular
+    /// speed, and the body turns about one fixed axis at constant angular
     /// velocity.
     #[test]
     fn demo_slerp_motion_is_straight_and_uniform() {
@@ -386,17 +271,17 @@ mod tests {
         let panel = demo.panels()[2];
         assert_eq!(panel.method, Method::Slerp);
         let n = 24;
-        let frames: Vec<RigTForm> = (0..n)
-            .map(|i| match demo.object_frame(&panel, Demo::alpha(i, n)) {
-                Frame::Rigid(r) => r,
-                Frame::Matrix(_) => panic!("slerp gives rigid frames"),
+        let placements: Vec<RigTForm> = (0..n)
+            .map(|i| match panel.placement(Demo::alpha(i, n)) {
+                Placement::Rigid(r) => r,
+                Placement::Matrix(_) => panic!("slerp places the body rigidly"),
             })
             .collect();
         let (k0, k1) = keyframes();
         let step = (k1.t - k0.t) * (1.0 / (n - 1) as f32);
         let (_, total) = (k1.r * k0.r.inv()).to_axis_angle();
         let (axis, _) = (k1.r * k0.r.inv()).to_axis_angle();
-        for pair in frames.windows(2) {
+        for pair in placements.windows(2) {
             let (a, b) = (pair[0], pair[1]);
             assert!(
                 (b.t - a.t - step).norm() < 1e-5,
@@ -409,30 +294,9 @@ mod tests {
             );
             assert!(turn_axis.dot(axis) > 1.0 - 1e-4, "one fixed axis");
         }
-        assert!(frames[0].r.angle_to(k0.r) < 1e-6);
-        assert!(frames[n as usize - 1].r.angle_to(k1.r) < 1e-5);
+        assert!(placements[0].r.angle_to(k0.r) < 1e-6);
+        assert!(placements[n as usize - 1].r.angle_to(k1.r) < 1e-5);
         assert!((total.to_degrees() - 150.0).abs() < 1e-3);
-    }
-
-    #[test]
-    fn matrix_lerp_panel_shrinks_halfway() {
-        let demo = Demo::new(Comparison::Interpolation, None);
-        let caption = demo.caption(&demo.panels()[0], 0.5);
-        // cos(75 degrees)^2 = 0.067: the plane of the turn collapses.
-        assert_eq!(caption, "volume x0.07");
-        assert_eq!(demo.caption(&demo.panels()[0], 0.0), "volume x1.00");
-    }
-
-    #[test]
-    fn rotated_world_changes_euler_but_not_slerp() {
-        let demo = Demo::new(Comparison::Invariance, None);
-        let titles: Vec<_> = demo.panels().iter().map(|p| p.title).collect();
-        assert_eq!(titles[1], "EULER, WORLD TURNED");
-        let euler_g = demo.caption(&demo.panels()[1], 0.5);
-        let slerp_g = demo.caption(&demo.panels()[3], 0.5);
-        assert_eq!(slerp_g, "  0.0 deg off world's");
-        let euler_off: f32 = euler_g.split_whitespace().next().unwrap().parse().unwrap();
-        assert!(euler_off > 10.0, "{euler_g}");
     }
 
     #[test]

@@ -23,7 +23,7 @@ impl Euler {
     ///
     /// ```
     /// use rigtform::Quat;
-    /// use rigtform_render::Euler;
+    /// use rigtform_render::demo::euler::Euler;
     /// let e = Euler::from_quat(Quat::from_rotation_y(0.5));
     /// assert!(e.x.abs() < 1e-6 && (e.y - 0.5).abs() < 1e-6 && e.z.abs() < 1e-6);
     /// ```
@@ -56,7 +56,7 @@ impl Euler {
     ///
     /// ```
     /// use rigtform::Quat;
-    /// use rigtform_render::Euler;
+    /// use rigtform_render::demo::euler::Euler;
     /// let q = Euler { x: 0.0, y: 0.0, z: 0.7 }.to_quat();
     /// assert!(q.angle_to(Quat::from_rotation_z(0.7)) < 1e-6);
     /// ```
@@ -70,7 +70,7 @@ impl Euler {
     /// Each angle lerped on its own: the "bad idea".
     ///
     /// ```
-    /// use rigtform_render::Euler;
+    /// use rigtform_render::demo::euler::Euler;
     /// let a = Euler { x: 0.0, y: 0.2, z: -1.0 };
     /// let b = Euler { x: 1.0, y: 0.4, z: 1.0 };
     /// let mid = a.lerp(b, 0.5);
