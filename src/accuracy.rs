@@ -128,7 +128,7 @@ pub const INTEGRATE_STEP_MAX_ANGLE_ERROR: f32 = backend::INTEGRATE_STEP_MAX_ANGL
 pub const SMOOTHER_DECAY_MAX_ERROR: f32 = backend::SMOOTHER_DECAY_MAX_ERROR;
 /// Bound on the 6D inclination RMSE, in degrees, of
 /// `attitude::OrientationFilter` with `FilterParams::DEFAULT` on BROAD trial
-/// 16 (fast translation), shipped in `tests/data/` and run by
+/// 16 (fast translation), shipped in `testkit/data/` and run by
 /// `tests/broad.rs`: the measured RMSE rounded up.
 pub const FILTER_BROAD_16_INCLINATION_RMSE_DEG: f32 = 0.8; // 0.633 6D and 9D (fast-math: 0.633)
 /// Bound on the 9D total RMSE, in degrees, of the same run with the

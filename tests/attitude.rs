@@ -2,12 +2,12 @@
 //! reference, with the bounds of `rigtform::accuracy` the docs quote
 //! (`cargo test --test attitude -- --nocapture` prints the measured maxima).
 
-mod common;
+use rigtform_testkit as testkit;
 
-use common::{angle_error, draw_count, pow64, rotation_angle64, to_f64, vec_to_f64, Draws, Worst};
 use nalgebra as na;
 use rigtform::accuracy;
 use rigtform::{Cvec3, Quat};
+use testkit::{angle_error, draw_count, pow64, rotation_angle64, to_f64, vec_to_f64, Draws, Worst};
 
 /// The exponential map in f64: the rotation by |v| about v.
 fn exp64(v: na::Vector3<f64>) -> na::Quaternion<f64> {

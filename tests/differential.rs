@@ -1,17 +1,17 @@
 //! Differential test against an f64 reference: nalgebra in f64 for products,
 //! rotations and rotation matrices; the notes' formulas evaluated in f64
-//! (`common::pow64`, `common::slerp64`) for the power operator and slerp.
+//! (`testkit::pow64`, `testkit::slerp64`) for the power operator and slerp.
 //!
 //! Each test draws many random inputs, tracks the largest error, prints it
 //! (`cargo test --test differential -- --nocapture`) and asserts that it
 //! stays within the constant of `rigtform::accuracy` that the docs quote.
 
-mod common;
+use rigtform_testkit as testkit;
 
-use common::{angle_error, draw_count, slerp64, to_f64, Draws, Worst};
 use nalgebra as na;
 use rigtform::accuracy;
 use rigtform::{Cvec3, Matrix4, Quat};
+use testkit::{angle_error, draw_count, slerp64, to_f64, Draws, Worst};
 
 fn norm_error(q: Quat) -> f64 {
     (to_f64(q).norm() - 1.0).abs()
@@ -42,9 +42,9 @@ fn rotation_is_within_its_bound() {
         let q = draws.unit_quat();
         let v = draws.unit_vec64() * draws.uniform(1e-3, 1e3);
         let v = Cvec3::new(v.x as f32, v.y as f32, v.z as f32);
-        let want = na::UnitQuaternion::new_normalize(to_f64(q)) * common::vec_to_f64(v);
-        let got = common::vec_to_f64(q * v);
-        worst.see((got - want).norm() / common::vec_to_f64(v).norm(), || {
+        let want = na::UnitQuaternion::new_normalize(to_f64(q)) * testkit::vec_to_f64(v);
+        let got = testkit::vec_to_f64(q * v);
+        worst.see((got - want).norm() / testkit::vec_to_f64(v).norm(), || {
             format!("{q:?} {v:?}")
         });
     }
@@ -66,7 +66,7 @@ fn pow_is_within_its_bounds() {
         };
         let got = q.pow(alpha);
         let q64 = to_f64(q).normalize();
-        let want = common::pow64(q64, alpha as f64);
+        let want = testkit::pow64(q64, alpha as f64);
         // The documented bound is per radian turned (at least one radian):
         // the f32 rounding of alpha phi grows with it.
         let turned = (alpha as f64 * 2.0 * q64.imag().norm().atan2(q64.w)).abs();
@@ -88,7 +88,7 @@ fn to_axis_angle_is_within_its_bound() {
         let q64 = to_f64(q);
         let want = 2.0 * q64.imag().norm().atan2(q64.w.abs());
         let (axis, angle) = q.to_axis_angle();
-        let axis_err = (common::vec_to_f64(axis) - q64.imag().normalize() * q64.w.signum()).norm();
+        let axis_err = (testkit::vec_to_f64(axis) - q64.imag().normalize() * q64.w.signum()).norm();
         worst.see(
             (angle as f64 - want).abs().max(axis_err * want.min(1.0)),
             || format!("{q:?}"),
@@ -121,12 +121,12 @@ fn slerp_class(name: &'static str, pair: Pair, seed: u64) -> (Worst, Worst) {
                 *na::UnitQuaternion::from_axis_angle(&axis, angle).as_ref() * a64
             }
         };
-        let (a, b) = (common::to_f32(a64), common::to_f32(b64));
+        let (a, b) = (testkit::to_f32(a64), testkit::to_f32(b64));
         let alpha = draws.uniform(-1.0, 2.0) as f32;
         let got = a.slerp(b, alpha);
         let want = slerp64(to_f64(a), to_f64(b), alpha as f64);
         assert!(got.is_finite(), "{name}: {a:?} {b:?} {alpha}");
-        let turned = alpha.abs() as f64 * common::rotation_angle64(to_f64(a), to_f64(b));
+        let turned = alpha.abs() as f64 * testkit::rotation_angle64(to_f64(a), to_f64(b));
         worst.see(angle_error(got, want) / turned.max(1.0), || {
             format!("{a:?} {b:?} {alpha}")
         });
@@ -172,7 +172,7 @@ fn slerp_of_rotations_exactly_pi_apart_is_finite_unit_and_halfway_at_the_middle(
         let got = a.slerp(b, alpha);
         assert!(got.is_finite());
         let travelled = a.angle_to(got) as f64;
-        let exact = common::rotation_angle64(to_f64(a), to_f64(b));
+        let exact = testkit::rotation_angle64(to_f64(a), to_f64(b));
         let turned = (alpha as f64 * exact).max(1.0);
         worst.see(
             ((travelled - alpha as f64 * exact).abs() / turned).max(norm_error(got)),

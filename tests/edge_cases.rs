@@ -1,10 +1,9 @@
 //! The numerics contract of DESIGN.md, item by item, on the edge values of
-//! `common::EDGE_F32` (zeros, subnormals, +-1, 1 +- ulp, 1e30, f32::MAX,
+//! `testkit::EDGE_F32` (zeros, subnormals, +-1, 1 +- ulp, 1e30, f32::MAX,
 //! infinities, NaN) and on random bit patterns.
 
-mod common;
+use rigtform_testkit as testkit;
 
-use common::{edge_quats, finite_edges};
 use core::f32::consts::PI;
 use rand::{Rng, SeedableRng};
 use rigtform::accuracy::{
@@ -12,11 +11,12 @@ use rigtform::accuracy::{
     SLERP_MAX_ANGLE_ERROR, UNIT_NORM_ERROR,
 };
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+use testkit::{edge_quats, finite_edges};
 
 /// The documented error of a power that turns by `turn` radians, plus the
 /// product inside `angle_to` that measures it.
 fn pow_bound(turn: f32) -> f32 {
-    common::pow_tol(1.0, turn) + MUL_MAX_ANGLE_ERROR
+    testkit::pow_tol(1.0, turn) + MUL_MAX_ANGLE_ERROR
 }
 
 fn is_nan_quat(q: Quat) -> bool {
@@ -222,9 +222,9 @@ fn pow_of_non_unit_quaternions_is_the_power_of_their_direction() {
         let s = scaled(q, scale);
         let p = s.pow(0.4);
         assert!(is_unit(p, UNIT_NORM_ERROR), "{scale}: {p:?}");
-        let want = common::pow64(common::to_f64(s).normalize(), 0.4);
+        let want = testkit::pow64(testkit::to_f64(s).normalize(), 0.4);
         assert!(
-            common::angle_error(p, want) <= pow_bound(0.4 * 1.1) as f64,
+            testkit::angle_error(p, want) <= pow_bound(0.4 * 1.1) as f64,
             "{scale}: {p:?}"
         );
     }
@@ -335,7 +335,7 @@ fn slerp_of_identical_nearly_identical_antipodal_and_opposite_rotations() {
 fn slerp_extrapolated_far_from_nearly_identical_inputs_is_unit() {
     // The direction of travel of inputs 1e-6 rad apart is known only
     // roughly; far out it must still give a unit result.
-    let mut draws = common::Draws::new(32);
+    let mut draws = testkit::Draws::new(32);
     for _ in 0..10_000 {
         let a = draws.unit_quat();
         let axis = draws.unit_vec64();
@@ -372,7 +372,7 @@ fn slerp_of_inputs_closer_than_f32_squares_can_tell_is_the_tiny_turn() {
 fn slerp_of_large_non_unit_inputs_is_finite_and_scale_free() {
     // Far off the unit precondition, but finite: slerp is scale-free like
     // pow (a result with the norm of a), not NaN.
-    let mut draws = common::Draws::new(33);
+    let mut draws = testkit::Draws::new(33);
     for _ in 0..1_000 {
         let (a, b) = (draws.unit_quat(), draws.unit_quat());
         let alpha = draws.uniform(0.0, 1.0) as f32;
@@ -392,7 +392,7 @@ fn slerp_extrapolated_from_non_unit_inputs_is_scale_free() {
     // orthogonal to a by a projection divided by |a|^2); it too turns by
     // alpha times the angle whatever the norms, down to tiny ones, where
     // the projection's coefficient exceeds |a|^2.
-    let mut draws = common::Draws::new(34);
+    let mut draws = testkit::Draws::new(34);
     for _ in 0..1_000 {
         let (a, b) = (draws.unit_quat(), draws.unit_quat());
         for (sa, sb) in [(1e-10f32, 3e-10f32), (2.0, 0.5), (1e10, 1e11)] {
@@ -447,7 +447,7 @@ fn normalize_works_from_subnormal_to_max() {
 fn renormalized_product_chain_stays_unit() {
     // A gyro integrator's chain: a million products of small random
     // rotations (up to 0.1 rad each, from a fixed pool of 1,000).
-    let mut draws = common::Draws::new(30);
+    let mut draws = testkit::Draws::new(30);
     let steps: Vec<Quat> = (0..1000)
         .map(|_| {
             let axis = draws.unit_vec64();
@@ -472,7 +472,7 @@ fn renormalized_product_chain_stays_unit() {
 
 #[test]
 fn renormalized_product_is_the_same_rotation_as_the_plain_one() {
-    let mut draws = common::Draws::new(31);
+    let mut draws = testkit::Draws::new(31);
     for _ in 0..10_000 {
         let (a, b) = (draws.unit_quat(), draws.unit_quat());
         let (plain, renormalized) = (a * b, a.mul_renormalized(b));
@@ -553,7 +553,7 @@ fn slerp_extrapolated_from_inputs_ulps_apart_turns_by_no_more_than_their_resolut
     // resolution of their difference; taking the angle of all of it was
     // off by up to 8e-7 alpha (27 times the turn at 3e-8 rad apart).
     use rigtform_proofs::reference::Quat64;
-    let mut draws = common::Draws::new(35);
+    let mut draws = testkit::Draws::new(35);
     for _ in 0..20_000 {
         let a = draws.unit_quat();
         let axis = draws.unit_vec64();

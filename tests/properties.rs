@@ -3,9 +3,8 @@
 //! the constants of `rigtform::accuracy`, times the number of rounded
 //! operations each side of an identity goes through.
 
-mod common;
+use rigtform_testkit as testkit;
 
-use common::{max_entry_diff, pow_tol, rig_tform, slerp_tol, unit_quat, vec3};
 use core::f32::consts::PI;
 use proptest::prelude::*;
 use rigtform::accuracy::{
@@ -13,13 +12,8 @@ use rigtform::accuracy::{
     ROTATE_MAX_REL_ERROR, UNIT_NORM_ERROR,
 };
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
-use rigtform_proofs::laws::{self, Verdict};
-
-/// A law of `rigtform_proofs::laws` (the functions the Kani harnesses, the
-/// fuzz targets and the on-target tests call too) as a proptest assertion.
-fn law(verdict: Verdict) -> Result<(), TestCaseError> {
-    verdict.map_err(|v| TestCaseError::fail(format!("{v:?}")))
-}
+use rigtform_proofs::laws::{self, assert_holds};
+use testkit::{max_entry_diff, pow_tol, rig_tform, slerp_tol, unit_quat, vec3};
 
 /// The angle of a unit quaternion as the notes' power operator sees it, 2 atan2(|v|, w).
 fn quat_angle(q: Quat) -> f32 {
@@ -187,15 +181,15 @@ proptest! {
     #[test]
     fn slerp_agrees_with_nalgebra_in_f64(a in unit_quat(), b in unit_quat(), alpha in 0.0f32..1.0) {
         use nalgebra::{Unit, UnitQuaternion};
-        let na_a = UnitQuaternion::new_normalize(common::to_f64(a));
-        let mut na_b = Unit::into_inner(UnitQuaternion::new_normalize(common::to_f64(b)));
+        let na_a = UnitQuaternion::new_normalize(testkit::to_f64(a));
+        let mut na_b = Unit::into_inner(UnitQuaternion::new_normalize(testkit::to_f64(b)));
         if na_a.as_ref().dot(&na_b) < 0.0 {
             na_b = -na_b; // nalgebra's slerp interpolates the components as given
         }
         let na_b = UnitQuaternion::new_normalize(na_b);
         if let Some(want) = na_a.try_slerp(&na_b, alpha as f64, 1e-9) {
             let tol = slerp_tol(alpha, a.angle_to(b)) + MUL_MAX_ANGLE_ERROR;
-            prop_assert!(common::angle_error(a.slerp(b, alpha), *want.as_ref()) <= tol as f64);
+            prop_assert!(testkit::angle_error(a.slerp(b, alpha), *want.as_ref()) <= tol as f64);
         }
     }
 
@@ -382,53 +376,53 @@ proptest! {
 
     #[test]
     fn law_products_multiply_norms(a in unit_quat(), b in unit_quat()) {
-        law(laws::product_norm_is_multiplicative(a, b))?;
+        assert_holds(laws::product_norm_is_multiplicative(a, b));
     }
 
     #[test]
     fn law_rotations_preserve_length(q in unit_quat(), c in vec3()) {
-        law(laws::rotation_preserves_length(q, c))?;
+        assert_holds(laws::rotation_preserves_length(q, c));
     }
 
     #[test]
     fn law_pow_and_slerp_are_unit_for_any_finite_alpha(a in unit_quat(), b in unit_quat(), alpha in prop::num::f32::NORMAL) {
-        law(laws::pow_is_unit(a, alpha))?;
-        law(laws::slerp_is_unit(a, b, alpha))?;
-        law(laws::slerp_is_unit(a, -a, alpha))?;
+        assert_holds(laws::pow_is_unit(a, alpha));
+        assert_holds(laws::slerp_is_unit(a, b, alpha));
+        assert_holds(laws::slerp_is_unit(a, -a, alpha));
     }
 
     #[test]
     fn law_slerp_hits_its_endpoints_and_turns_by_alpha_times_the_angle(a in unit_quat(), b in unit_quat(), alpha in 0.0f32..=1.0) {
-        law(laws::slerp_is_exact_at_zero(a, b))?;
-        law(laws::slerp_turns_by_alpha_times_the_angle(a, b, alpha))?;
-        law(laws::slerp_reaches_the_rotation_of_b_at_one(a, b))?;
+        assert_holds(laws::slerp_is_exact_at_zero(a, b));
+        assert_holds(laws::slerp_turns_by_alpha_times_the_angle(a, b, alpha));
+        assert_holds(laws::slerp_reaches_the_rotation_of_b_at_one(a, b));
     }
 
     #[test]
     fn law_nlerp_and_blend_are_unit(a in unit_quat(), b in unit_quat(), c in unit_quat(), alpha in 0.0f32..=1.0, w in prop::array::uniform3(-3.0f32..3.0)) {
-        law(laws::nlerp_is_unit(a, b, alpha))?;
-        law(laws::blend_is_unit_or_identity(&[(a, w[0]), (b, w[1]), (c, w[2])]))?;
+        assert_holds(laws::nlerp_is_unit(a, b, alpha));
+        assert_holds(laws::blend_is_unit_or_identity(&[(a, w[0]), (b, w[1]), (c, w[2])]));
     }
 
     #[test]
     fn law_inverse_identities_and_cn(q in unit_quat(), a in rig_tform()) {
-        law(laws::inverse_is_an_involution(q))?;
-        law(laws::product_with_inverse_is_real(q))?;
-        law(laws::cn_gives_non_negative_w_and_the_same_rotation(q))?;
-        law(laws::rigid_product_with_inverse_is_identity(a))?;
-        law(laws::rigid_inverse_is_an_involution(a))?;
-        law(laws::rigid_inverse_matches_matrix_inverse(a))?;
+        assert_holds(laws::inverse_is_an_involution(q));
+        assert_holds(laws::product_with_inverse_is_real(q));
+        assert_holds(laws::cn_gives_non_negative_w_and_the_same_rotation(q));
+        assert_holds(laws::rigid_product_with_inverse_is_identity(a));
+        assert_holds(laws::rigid_inverse_is_an_involution(a));
+        assert_holds(laws::rigid_inverse_matches_matrix_inverse(a));
     }
 
     #[test]
     fn law_rigid_matrices_act_as_their_transforms(a in rig_tform(), b in rig_tform(), c in vec3()) {
-        law(laws::rigid_matrix_moves_points_as_the_transform(a, Cvec4::from_point(c)))?;
-        law(laws::rigid_matrix_moves_points_as_the_transform(a, Cvec4::from_vector(c)))?;
-        law(laws::interpolate_is_exact_at_zero(a, b))?;
+        assert_holds(laws::rigid_matrix_moves_points_as_the_transform(a, Cvec4::from_point(c)));
+        assert_holds(laws::rigid_matrix_moves_points_as_the_transform(a, Cvec4::from_vector(c)));
+        assert_holds(laws::interpolate_is_exact_at_zero(a, b));
     }
 
     #[test]
     fn law_matrix_inverse_is_none_or_finite(bits in prop::array::uniform16(any::<u32>())) {
-        law(laws::matrix_inverse_is_none_or_finite(Matrix4::from_cols_array(&bits.map(f32::from_bits))))?;
+        assert_holds(laws::matrix_inverse_is_none_or_finite(Matrix4::from_cols_array(&bits.map(f32::from_bits))));
     }
 }

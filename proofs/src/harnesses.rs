@@ -3,10 +3,11 @@
 //! Under `cargo kani -p rigtform-proofs` (where Kani is installed) each
 //! harness is a proof over every input its assumptions allow. Everywhere
 //! else (`cargo test`), the same body runs as an ordinary test through the
-//! stand-in in `src/kani.rs`, on 50,000 random draws: that is testing, not
+//! stand-in in `src/kani_stand_in.rs`, on 50,000 random draws: that is testing, not
 //! proof. Kani is not installable on the machines this crate is developed
-//! on, so none of these harnesses has been proven there; the proof times
-//! below are for whoever runs Kani ("not run yet" until someone does).
+//! on, so none of these harnesses has been proven there, and no proof time
+//! is recorded beside them: a harness gets its measured time once
+//! `cargo kani` has proven it.
 //!
 //! Every assumption is marked **precondition** (the law's own, from its
 //! docs) or **solver bound** (narrower than the law allows, only to keep the
@@ -25,8 +26,8 @@
 //! model-checked (the stand-in runs the bodies with both backends).
 
 #[cfg(not(kani))]
-use crate::kani;
-use crate::laws::{self, Verdict};
+use crate::kani_stand_in as kani;
+use crate::laws::{self, assert_holds};
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 
 /// Runs `body` once under Kani (symbolically: once is all inputs), or on
@@ -38,11 +39,7 @@ fn check(name: &str, body: impl Fn()) {
         body();
     }
     #[cfg(not(kani))]
-    crate::kani::run(name, body);
-}
-
-fn assert_law(verdict: Verdict) {
-    assert!(verdict.is_ok(), "{verdict:?}");
+    crate::kani_stand_in::run(name, body);
 }
 
 /// Any finite `f32`.
@@ -97,7 +94,6 @@ const MILLION: f32 = 1_048_576.0;
 /// 2^60: the laws' precondition where a product must stay finite.
 const TWO_TO_60: f32 = 1.152_921_5e18;
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(not(kani), test)]
 fn quat_product_multiplies_norms() {
@@ -107,11 +103,10 @@ fn quat_product_multiplies_norms() {
         // Precondition: squared norms in [2^-40, 2^40] (no underflow).
         let n = |q: Quat| f64::from(q.norm_squared());
         kani::assume((9.1e-13..=1.1e12).contains(&n(a)) && (9.1e-13..=1.1e12).contains(&n(b)));
-        assert_law(laws::product_norm_is_multiplicative(a, b));
+        assert_holds(laws::product_norm_is_multiplicative(a, b));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -121,11 +116,10 @@ fn quat_rotation_preserves_length() {
         let q = any_unit_quat();
         // Solver bound: components within 2^20 (the law allows 2^40).
         let v = any_vec_within(MILLION);
-        assert_law(laws::rotation_preserves_length(q, v));
+        assert_holds(laws::rotation_preserves_length(q, v));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -136,13 +130,12 @@ fn normalize_is_unit_from_subnormal_to_max() {
         // exact power-of-two rescaling is the point.
         let q = any_finite_quat();
         kani::assume(q != Quat::new(0.0, 0.0, 0.0, 0.0));
-        assert_law(laws::normalize_is_unit(q));
+        assert_holds(laws::normalize_is_unit(q));
     });
 }
 
 /// The atan2 edge cases of the contract: zero, subnormal and huge vector
 /// parts, `w = +-1`, `w = 0`, non-unit inputs, any finite `alpha`.
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))] // scaled sums of squares over four components
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -157,11 +150,10 @@ fn pow_is_unit_for_every_finite_input() {
         // Preconditions: finite quaternion and exponent. No solver bound.
         let q = any_finite_quat();
         let alpha = any_finite();
-        assert_law(laws::pow_is_unit(q, alpha));
+        assert_holds(laws::pow_is_unit(q, alpha));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::atan2, crate::stubs::atan2))]
@@ -176,11 +168,10 @@ fn pow_of_non_finite_input_is_nan() {
         let alpha: f32 = kani::any();
         // Precondition: something is NaN or infinite.
         kani::assume(!(q.is_finite() && alpha.is_finite()));
-        assert_law(laws::pow_of_non_finite_is_nan(q, alpha));
+        assert_holds(laws::pow_of_non_finite_is_nan(q, alpha));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
@@ -191,13 +182,13 @@ fn slerp_of_non_finite_input_is_nan() {
         let alpha: f32 = kani::any();
         // Precondition: something is NaN or infinite.
         kani::assume(!(a.is_finite() && b.is_finite() && alpha.is_finite()));
-        assert_law(laws::slerp_of_non_finite_is_nan(a, b, alpha));
+        assert_holds(laws::slerp_of_non_finite_is_nan(a, b, alpha));
     });
 }
 
 /// Identical, nearly identical, antipodal and opposite pairs are all among
 /// the inputs. The real sine and atan2 kernels: the norm depends on their
-/// accuracy. Proof time with Kani: not run yet.
+/// accuracy.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -207,11 +198,10 @@ fn slerp_is_unit_for_every_finite_alpha() {
         // Preconditions: unit inputs, finite alpha. No solver bound.
         let (a, b) = (any_unit_quat(), any_unit_quat());
         let alpha = any_finite();
-        assert_law(laws::slerp_is_unit(a, b, alpha));
+        assert_holds(laws::slerp_is_unit(a, b, alpha));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -220,11 +210,10 @@ fn slerp_is_exact_at_zero() {
     check("slerp_is_exact_at_zero", || {
         // Precondition: components within 2^60, so that b a^-1 is finite.
         let (a, b) = (any_quat_within(TWO_TO_60), any_quat_within(TWO_TO_60));
-        assert_law(laws::slerp_is_exact_at_zero(a, b));
+        assert_holds(laws::slerp_is_exact_at_zero(a, b));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -234,11 +223,10 @@ fn nlerp_is_unit() {
         // Preconditions: unit inputs, alpha in [0, 1].
         let (a, b) = (any_unit_quat(), any_unit_quat());
         let alpha = kani::any_where(|t: &f32| (0.0..=1.0).contains(t));
-        assert_law(laws::nlerp_is_unit(a, b, alpha));
+        assert_holds(laws::nlerp_is_unit(a, b, alpha));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))] // three entries, and normalize's four components
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -252,40 +240,37 @@ fn blend_of_three_is_unit_or_identity() {
             (any_unit_quat(), any_within(MILLION)),
             (any_unit_quat(), any_within(MILLION)),
         ];
-        assert_law(laws::blend_is_unit_or_identity(&entries));
+        assert_holds(laws::blend_is_unit_or_identity(&entries));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(not(kani), test)]
 fn quat_inverse_is_an_involution() {
     check("quat_inverse_is_an_involution", || {
         // No assumption: every bit pattern, NaN payloads included.
         let q = any_quat_bits();
-        assert_law(laws::inverse_is_an_involution(q));
+        assert_holds(laws::inverse_is_an_involution(q));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(not(kani), test)]
 fn quat_times_inverse_is_real() {
     check("quat_times_inverse_is_real", || {
         // Precondition: components within 2^60 (no overflow).
         let q = any_quat_within(TWO_TO_60);
-        assert_law(laws::product_with_inverse_is_real(q));
+        assert_holds(laws::product_with_inverse_is_real(q));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(not(kani), test)]
 fn cn_gives_non_negative_w_and_the_same_rotation() {
     check("cn_gives_non_negative_w_and_the_same_rotation", || {
         // No assumption: every bit pattern.
         let q = any_quat_bits();
-        assert_law(laws::cn_gives_non_negative_w_and_the_same_rotation(q));
+        assert_holds(laws::cn_gives_non_negative_w_and_the_same_rotation(q));
     });
 }
 
@@ -295,40 +280,36 @@ fn any_rig_tform() -> RigTForm {
     RigTForm::new(any_vec_within(MILLION), any_unit_quat())
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn rigtform_times_inverse_is_identity() {
     check("rigtform_times_inverse_is_identity", || {
-        assert_law(laws::rigid_product_with_inverse_is_identity(any_rig_tform()));
+        assert_holds(laws::rigid_product_with_inverse_is_identity(any_rig_tform()));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn rigtform_inverse_is_an_involution() {
     check("rigtform_inverse_is_an_involution", || {
-        assert_law(laws::rigid_inverse_is_an_involution(any_rig_tform()));
+        assert_holds(laws::rigid_inverse_is_an_involution(any_rig_tform()));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(17))] // the law compares 16 matrix entries
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(not(kani), test)]
 fn rigtform_inverse_agrees_with_matrix_inverse() {
     check("rigtform_inverse_agrees_with_matrix_inverse", || {
-        assert_law(laws::rigid_inverse_matches_matrix_inverse(any_rig_tform()));
+        assert_holds(laws::rigid_inverse_matches_matrix_inverse(any_rig_tform()));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -340,11 +321,10 @@ fn rigtform_matrix_moves_points_as_the_transform() {
         let w = if kani::any::<bool>() { 1.0 } else { 0.0 };
         let v = any_vec_within(MILLION);
         let c = Cvec4::new(v.x, v.y, v.z, w);
-        assert_law(laws::rigid_matrix_moves_points_as_the_transform(a, c));
+        assert_holds(laws::rigid_matrix_moves_points_as_the_transform(a, c));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -354,11 +334,10 @@ fn rigtform_interpolate_is_exact_at_zero() {
         // Precondition: components within 2^60.
         let a = RigTForm::new(any_vec_within(TWO_TO_60), any_quat_within(TWO_TO_60));
         let b = RigTForm::new(any_vec_within(TWO_TO_60), any_quat_within(TWO_TO_60));
-        assert_law(laws::interpolate_is_exact_at_zero(a, b));
+        assert_holds(laws::interpolate_is_exact_at_zero(a, b));
     });
 }
 
-/// Proof time with Kani: not run yet.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(17))] // sixteen entries drawn, four columns checked
 #[cfg_attr(not(kani), test)]
@@ -366,7 +345,7 @@ fn matrix_inverse_is_none_or_finite() {
     check("matrix_inverse_is_none_or_finite", || {
         // No assumption: every bit pattern of every entry.
         let m: [f32; 16] = core::array::from_fn(|_| kani::any());
-        assert_law(laws::matrix_inverse_is_none_or_finite(
+        assert_holds(laws::matrix_inverse_is_none_or_finite(
             Matrix4::from_cols_array(&m),
         ));
     });

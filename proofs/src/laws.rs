@@ -34,6 +34,24 @@ pub struct Violation {
 /// The outcome of checking a law on one input.
 pub type Verdict = Result<(), Violation>;
 
+/// Panics with the [`Violation`] if `verdict` is one. Every layer asserts a
+/// law this one way: the Kani harnesses (where the panic fails the proof),
+/// the proptest properties (where proptest catches it and shrinks the
+/// input) and the fuzz targets (where it is the crash libFuzzer reports).
+///
+/// ```should_panic
+/// use rigtform::Quat;
+/// use rigtform_proofs::laws::{assert_holds, pow_is_unit};
+/// assert_holds(pow_is_unit(Quat::from_rotation_x(1.0), 0.5)); // holds
+/// assert_holds(Err(rigtform_proofs::laws::Violation { law: "example", measured: 1.0, bound: 0.0 }));
+/// ```
+#[track_caller]
+pub fn assert_holds(verdict: Verdict) {
+    if let Err(v) = verdict {
+        panic!("{v:?}");
+    }
+}
+
 /// `|norm^2 - 1|` allowed after one rounded operation on unit inputs
 /// (a product, `normalize`, `pow`, `nlerp`): four times the measured
 /// [`UNIT_NORM_ERROR`] (which is about `|norm - 1|`, so half of
@@ -107,7 +125,7 @@ fn within(law: &'static str, measured: f64, bound: f64) -> Verdict {
     }
 }
 
-fn holds(law: &'static str, condition: bool) -> Verdict {
+fn yes_or_no(law: &'static str, condition: bool) -> Verdict {
     within(law, if condition { 0.0 } else { 1.0 }, 0.0)
 }
 
@@ -170,7 +188,7 @@ pub fn normalize_is_unit(q: Quat) -> Verdict {
 /// Preconditions: `q` and `alpha` finite.
 pub fn pow_is_unit(q: Quat, alpha: f32) -> Verdict {
     let r = q.pow(alpha);
-    holds("pow_is_unit (finite)", r.is_finite())?;
+    yes_or_no("pow_is_unit (finite)", r.is_finite())?;
     within("pow_is_unit", (norm2(r) - 1.0).abs(), ONE_STEP_NORM_TOL)
 }
 
@@ -179,7 +197,7 @@ pub fn pow_is_unit(q: Quat, alpha: f32) -> Verdict {
 ///
 /// Preconditions: `q` or `alpha` not finite.
 pub fn pow_of_non_finite_is_nan(q: Quat, alpha: f32) -> Verdict {
-    holds("pow_of_non_finite_is_nan", is_nan_quat(q.pow(alpha)))
+    yes_or_no("pow_of_non_finite_is_nan", is_nan_quat(q.pow(alpha)))
 }
 
 /// `slerp` of unit quaternions gives a finite unit quaternion for every
@@ -189,7 +207,7 @@ pub fn pow_of_non_finite_is_nan(q: Quat, alpha: f32) -> Verdict {
 /// Preconditions: `a` and `b` unit to [`ONE_STEP_NORM_TOL`], `alpha` finite.
 pub fn slerp_is_unit(a: Quat, b: Quat, alpha: f32) -> Verdict {
     let r = a.slerp(b, alpha);
-    holds("slerp_is_unit (finite)", r.is_finite())?;
+    yes_or_no("slerp_is_unit (finite)", r.is_finite())?;
     within("slerp_is_unit", (norm2(r) - 1.0).abs(), TWO_STEP_NORM_TOL)
 }
 
@@ -198,7 +216,7 @@ pub fn slerp_is_unit(a: Quat, b: Quat, alpha: f32) -> Verdict {
 ///
 /// Preconditions: `a`, `b` or `alpha` not finite.
 pub fn slerp_of_non_finite_is_nan(a: Quat, b: Quat, alpha: f32) -> Verdict {
-    holds("slerp_of_non_finite_is_nan", is_nan_quat(a.slerp(b, alpha)))
+    yes_or_no("slerp_of_non_finite_is_nan", is_nan_quat(a.slerp(b, alpha)))
 }
 
 /// `slerp(a, b, 0) == a`, exactly (up to the sign of zero components).
@@ -206,7 +224,7 @@ pub fn slerp_of_non_finite_is_nan(a: Quat, b: Quat, alpha: f32) -> Verdict {
 /// Preconditions: `a` and `b` finite, components at most 2^60 in magnitude
 /// (so that `b a^-1` is finite).
 pub fn slerp_is_exact_at_zero(a: Quat, b: Quat) -> Verdict {
-    holds("slerp_is_exact_at_zero", a.slerp(b, 0.0) == a)
+    yes_or_no("slerp_is_exact_at_zero", a.slerp(b, 0.0) == a)
 }
 
 /// Slerp takes the short way at constant angular velocity: for `alpha` in
@@ -271,7 +289,7 @@ pub fn blend_is_unit_or_identity(entries: &[(Quat, f32)]) -> Verdict {
 ///
 /// Preconditions: none.
 pub fn inverse_is_an_involution(q: Quat) -> Verdict {
-    holds("inverse_is_an_involution", same_bits(q.inv().inv(), q))
+    yes_or_no("inverse_is_an_involution", same_bits(q.inv().inv(), q))
 }
 
 /// `q q^-1 = (|q|^2, 0)`: the real part is the rounded sum of squares and
@@ -302,7 +320,7 @@ pub fn product_with_inverse_is_real(q: Quat) -> Verdict {
 /// Preconditions: none.
 pub fn cn_gives_non_negative_w_and_the_same_rotation(q: Quat) -> Verdict {
     let r = q.cn();
-    holds(
+    yes_or_no(
         "cn_gives_non_negative_w_and_the_same_rotation",
         (r.w >= 0.0 || r.w.is_nan()) && (same_bits(r, q) || same_bits(r, -q)),
     )
@@ -336,7 +354,7 @@ pub fn rigid_product_with_inverse_is_identity(a: RigTForm) -> Verdict {
 /// `|a.t| <= 2^40`.
 pub fn rigid_inverse_is_an_involution(a: RigTForm) -> Verdict {
     let b = a.inv().inv();
-    holds(
+    yes_or_no(
         "rigid_inverse_is_an_involution (rotation)",
         same_bits(b.r, a.r),
     )?;
@@ -357,7 +375,7 @@ pub fn rigid_inverse_is_an_involution(a: RigTForm) -> Verdict {
 /// `|a.t| <= 2^20`.
 pub fn rigid_inverse_matches_matrix_inverse(a: RigTForm) -> Verdict {
     let Some(m) = Matrix4::from(a).inverse() else {
-        return holds("rigid_inverse_matches_matrix_inverse (invertible)", false);
+        return yes_or_no("rigid_inverse_matches_matrix_inverse (invertible)", false);
     };
     let want = Matrix4::from(a.inv()).to_cols_array();
     let worst = m
@@ -402,7 +420,7 @@ pub fn rigid_matrix_moves_points_as_the_transform(a: RigTForm, c: Cvec4) -> Verd
 ///
 /// Preconditions: `a` and `b` finite, components at most 2^60.
 pub fn interpolate_is_exact_at_zero(a: RigTForm, b: RigTForm) -> Verdict {
-    holds("interpolate_is_exact_at_zero", a.interpolate(b, 0.0) == a)
+    yes_or_no("interpolate_is_exact_at_zero", a.interpolate(b, 0.0) == a)
 }
 
 /// `Matrix4::inverse` and `normal_matrix` give `None` or finite entries,
@@ -414,7 +432,7 @@ pub fn matrix_inverse_is_none_or_finite(m: Matrix4) -> Verdict {
     let normal_ok = m
         .normal_matrix()
         .is_none_or(|n| n.is_finite() && n.cols[3] == Cvec4::new(0.0, 0.0, 0.0, 1.0));
-    holds("matrix_inverse_is_none_or_finite", inverse_ok && normal_ok)
+    yes_or_no("matrix_inverse_is_none_or_finite", inverse_ok && normal_ok)
 }
 
 #[cfg(test)]

@@ -230,8 +230,8 @@ struct Rest {
 /// # Accuracy
 ///
 /// Measured on real recordings with optical ground truth (BROAD trials 02,
-/// 07 and 16): see the README's IMU section and `examples/broad/`. On
-/// trial 16 (shipped in `tests/data/`), 6D inclination RMSE below
+/// 07 and 16): see the README's IMU section and the `broad` binary of `compare/`. On
+/// trial 16 (shipped in `testkit/data/`), 6D inclination RMSE below
 /// [`accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG`](crate::accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG)
 /// degrees (`tests/broad.rs`).
 ///

@@ -1,5 +1,5 @@
 //! BROAD's error metric, exactly as the benchmark defines it, and the
-//! filter runs it scores. Shared with `tests/broad.rs`.
+//! filter runs it scores.
 //!
 //! Error quaternion `e = estimate * inverse(truth)`, in the earth frame;
 //! total error `2 acos(|w|)`, heading error `2 atan(|z / w|)`, inclination
@@ -10,13 +10,16 @@
 use rigtform::attitude::{FilterParams, OrientationFilter};
 use rigtform::Quat;
 
-use crate::data::{BroadSample, BROAD_DT};
+use super::data::{BroadSample, BROAD_DT};
 
 /// The three errors of one sample, in degrees.
 #[derive(Clone, Copy, Debug)]
 pub struct SampleError {
+    /// The error's part that tilts the vertical: `2 acos(sqrt(w^2 + z^2))`.
     pub inclination: f64,
+    /// The error's part about the vertical: `2 atan(|z / w|)`.
     pub heading: f64,
+    /// The whole error angle: `2 acos(|w|)`.
     pub total: f64,
 }
 
@@ -41,8 +44,11 @@ pub fn sample_error(estimate: Quat, truth: [f64; 4]) -> SampleError {
 /// Root mean square errors over the scored samples, in degrees.
 #[derive(Clone, Copy, Debug)]
 pub struct Rmse {
+    /// RMSE of the inclination error.
     pub inclination: f64,
+    /// RMSE of the heading error.
     pub heading: f64,
+    /// RMSE of the total error.
     pub total: f64,
     /// How many samples were scored.
     pub samples: usize,
@@ -50,7 +56,9 @@ pub struct Rmse {
 
 /// A filter run over a trial: the estimate at every sample, and its score.
 pub struct Run {
+    /// The filter's estimate after each sample.
     pub estimates: Vec<Quat>,
+    /// The score of the estimates.
     pub rmse: Rmse,
 }
 
@@ -91,5 +99,62 @@ pub fn score(samples: &[BroadSample], estimates: &[Quat]) -> Rmse {
         heading: rms(head),
         total: rms(total),
         samples: n,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::broad::data::{read, Recording};
+
+    fn trial_16_samples() -> Vec<BroadSample> {
+        match read(&crate::broad::trial_16()) {
+            Ok(Recording::Broad(samples)) => samples,
+            _ => panic!("trial 16 is a readable BROAD trial"),
+        }
+    }
+
+    /// The rotation by `angle` about the unit `axis`, from f64 trigonometry
+    /// (this tests the metric, not the crate's kernels).
+    fn rotation(axis: [f64; 3], angle: f64) -> Quat {
+        let (s, c) = (angle / 2.0).sin_cos();
+        Quat::new(
+            c as f32,
+            (s * axis[0]) as f32,
+            (s * axis[1]) as f32,
+            (s * axis[2]) as f32,
+        )
+    }
+
+    #[test]
+    fn metric_splits_heading_from_inclination() {
+        let truth = rotation([1.0, 0.0, 0.0], 0.3);
+        let t = [truth.w, truth.x, truth.y, truth.z].map(f64::from);
+        // An error about earth's vertical is all heading...
+        let e = sample_error(rotation([0.0, 0.0, 1.0], 0.1) * truth, t);
+        assert!((e.heading - 0.1f64.to_degrees()).abs() < 1e-4, "{e:?}");
+        assert!(
+            e.inclination < 1e-2 && (e.total - e.heading).abs() < 1e-4,
+            "{e:?}"
+        );
+        // ... one about a horizontal axis all inclination, whatever the sign.
+        let e = sample_error(-(rotation([0.0, 1.0, 0.0], -0.2) * truth), t);
+        assert!((e.inclination - 0.2f64.to_degrees()).abs() < 1e-4, "{e:?}");
+        assert!(e.heading < 1e-2, "{e:?}");
+        // Ground truth rows without markers do not count.
+        let mut samples = trial_16_samples()[..2000].to_vec();
+        for s in &mut samples {
+            s.movement = true;
+        }
+        samples[0].truth = [f64::NAN; 4];
+        let estimates = vec![truth; samples.len()];
+        assert_eq!(
+            score(&samples, &estimates).samples,
+            1999 - samples
+                .iter()
+                .skip(1)
+                .filter(|s| s.truth[0].is_nan())
+                .count()
+        );
     }
 }

@@ -4,16 +4,14 @@
 //! over time.
 //!
 //! ```sh
-//! cargo run --release --example broad -- ../shared/data/imu/broad_*.csv \
+//! cargo run --release -p rigtform-compare --bin broad -- ../shared/data/imu/broad_*.csv \
 //!     ../shared/data/imu/xio_fusion_sensor_data.csv --plot docs/imu_errors.png
 //! ```
 //!
-//! Accepts BROAD trials (as CSV, or gzipped like the one in `tests/data/`)
+//! Accepts BROAD trials (as CSV, or gzipped like the one in the testkit's `data/`)
 //! and x-io's Fusion sample log (no ground truth: a summary only). The data
 //! and its origin are described in the README's IMU section.
 
-mod data;
-mod metric;
 mod plot;
 
 use std::path::PathBuf;
@@ -23,8 +21,8 @@ use clap::Parser;
 use rigtform::attitude::{FilterParams, OrientationFilter};
 use rigtform::{Cvec3, Quat};
 
-use data::{BroadSample, FusionSample, Recording};
-use metric::{Rmse, Run};
+use rigtform_testkit::broad::data::{self, BroadSample, FusionSample, Recording};
+use rigtform_testkit::broad::metric::{self, Rmse, Run};
 
 /// Evaluate rigtform's orientation filter on BROAD trials and x-io's Fusion log.
 #[derive(Parser)]
@@ -181,7 +179,7 @@ fn print_table(trials: &[Trial]) {
     if verdicts.is_empty() {
         return;
     }
-    println!("\nTargets (issue 6):");
+    println!("\nAgainst the published figures:");
     for (name, p, six, nine) in verdicts {
         let best_incl = p.madgwick.0.min(p.mahony.0);
         let check = |ok: bool| if ok { "met" } else { "MISSED" };

@@ -1,14 +1,14 @@
-//! The error-over-time plot of the `broad` example: one panel per BROAD
+//! The error-over-time plot of the `broad` binary: one panel per BROAD
 //! trial, 6D inclination error and 9D total error in degrees.
 
 use std::path::Path;
 
 use plotters::prelude::*;
 
-use crate::metric::sample_error;
 use crate::Trial;
+use rigtform_testkit::broad::metric::sample_error;
 
-/// Where the example looks for a font for the plot's labels (the plot is
+/// Where the binary looks for a font for the plot's labels (the plot is
 /// drawn without text if none is found): `RIGTFORM_FONT`, else DejaVu Sans
 /// where Debian and Ubuntu install it.
 const FONT_PATHS: [&str; 2] = [
@@ -54,7 +54,7 @@ pub fn write(path: &Path, trials: &[Trial]) -> Result<(), String> {
 /// Per bucket of samples: time (s), largest 6D inclination error and
 /// largest 9D total error (degrees), over the samples with ground truth.
 fn series(t: &Trial) -> Vec<(f64, f64, f64)> {
-    let dt = f64::from(crate::data::BROAD_DT);
+    let dt = f64::from(rigtform_testkit::broad::data::BROAD_DT);
     let mut points = Vec::new();
     for (k, chunk) in t.samples.chunks(BUCKET).enumerate() {
         let mut worst: Option<(f64, f64)> = None;

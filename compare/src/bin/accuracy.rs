@@ -4,9 +4,9 @@
 //! drift of a million chained products.
 //!
 //! ```text
-//! cargo run --release --example accuracy                      # 200,000 draws per class
-//! cargo run --release --example accuracy -- 10000             # fewer (CI)
-//! cargo run --release --features fast-math --example accuracy -- 200000 --rigtform-only
+//! cargo run --release -p rigtform-compare --bin accuracy                      # 200,000 draws per class
+//! cargo run --release -p rigtform-compare --bin accuracy -- 10000             # fewer (CI)
+//! cargo run --release -p rigtform-compare --features fast-math --bin accuracy -- 200000 --rigtform-only
 //! ```
 //!
 //! Errors are rotation angles in radians between the computed rotation and
@@ -15,16 +15,11 @@
 //! with `catch_unwind` and counted (nalgebra's `slerp` panics on inputs
 //! about 180 degrees apart, as its docs say). Prints Markdown tables.
 
-#[path = "../tests/common/mod.rs"]
-mod common;
-#[path = "../benches/inputs.rs"]
-mod inputs;
-
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use common::{pow64, slerp64, Draws};
-use inputs::*;
 use nalgebra as na;
+use rigtform_compare::*;
+use rigtform_testkit::{pow64, slerp64, Draws};
 
 /// A slerp of some library, on arrays `[w, x, y, z]`.
 type Slerp = fn([f32; 4], [f32; 4], f32) -> [f32; 4];
@@ -66,17 +61,17 @@ fn rigtform_name() -> String {
 }
 
 fn to64(q: [f32; 4]) -> na::Quaternion<f64> {
-    common::to_f64(rig_quat(q))
+    rigtform_testkit::to_f64(rig_quat(q))
 }
 
 fn to32(q: na::Quaternion<f64>) -> [f32; 4] {
-    let q = common::to_f32(q);
+    let q = rigtform_testkit::to_f32(q);
     [q.w, q.x, q.y, q.z]
 }
 
 /// The angle between two rotations given as f32 and f64 quaternions.
 fn angle_error(got: [f32; 4], want: na::Quaternion<f64>) -> f64 {
-    common::angle_error(rig_quat(got), want)
+    rigtform_testkit::angle_error(rig_quat(got), want)
 }
 
 /// Errors of one library on one class: every error, NaN and panic counts.
@@ -475,7 +470,7 @@ fn main() {
     }
     // Panics are counted, not printed.
     std::panic::set_hook(Box::new(|_| {}));
-    println!("<!-- cargo run --release --example accuracy -- {draws} -->\n");
+    println!("<!-- cargo run --release -p rigtform-compare --bin accuracy -- {draws} -->\n");
     println!("{draws} draws per class.\n");
     slerp_table(draws, rigtform_only);
     other_ops_table(draws, rigtform_only);

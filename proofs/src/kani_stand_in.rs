@@ -1,7 +1,8 @@
 //! A stand-in for the three `kani` functions the harnesses use, so that
 //! their bodies also run as ordinary tests where Kani is not installed
-//! (as on our machines). Compiled only without `cfg(kani)`; under Kani the
-//! real crate takes this name.
+//! (as on our machines). Compiled only for tests without `cfg(kani)`; the
+//! harnesses import it under the name `kani`, which under Kani is the real
+//! crate.
 //!
 //! It is a random tester, not a model checker: each harness body runs
 //! [`draw_count`] times (50,000 by default; `RIGTFORM_PROOF_DRAWS` sets

@@ -9,20 +9,16 @@
 //! inputs or left out); criterion reports the time per iteration, and the
 //! README's table divides its median by 1,024.
 //!
-//! `cargo bench --bench ops` runs them all, operation by operation;
-//! `cargo bench --bench ops -- slerp` only the slerp group.
-
-#[path = "../tests/common/mod.rs"]
-mod common;
-#[path = "inputs.rs"]
-mod inputs;
+//! `cargo bench -p rigtform-compare --bench ops` runs them all, operation by
+//! operation; `cargo bench -p rigtform-compare --bench ops -- slerp` only the
+//! slerp group.
 
 use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BenchmarkGroup, Criterion, Throughput};
-use inputs::*;
 use rigtform::{Cvec4, Matrix4, Quat, RigTForm};
+use rigtform_compare::*;
 
 /// Inputs per iteration.
 const N: usize = 1024;

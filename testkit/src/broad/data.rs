@@ -1,7 +1,7 @@
-//! Reading the recordings the `broad` example evaluates: BROAD trials
-//! (gyro, accelerometer, magnetometer and optical ground truth at 2000/7 Hz)
-//! and x-io's Fusion sample log (no ground truth), as plain or gzipped CSV.
-//! Shared with `tests/broad.rs`.
+//! Reading the recordings: BROAD trials (gyro, accelerometer, magnetometer
+//! and optical ground truth at 2000/7 Hz) and x-io's Fusion sample log (no
+//! ground truth), as plain or gzipped CSV. Errors name the file, the line
+//! and the column.
 
 use std::io::Read;
 use std::path::Path;
@@ -23,25 +23,37 @@ pub const FUSION_HEADER: &str = "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s
 /// whether the sample counts in the error metrics.
 #[derive(Clone, Copy, Debug)]
 pub struct BroadSample {
+    /// Angular rate, rad/s.
     pub gyr: Cvec3,
+    /// Specific force, m/s².
     pub acc: Cvec3,
+    /// Magnetic field, µT.
     pub mag: Cvec3,
+    /// Ground truth, sensor to ENU earth, `[w, x, y, z]`; NaN where the
+    /// optical markers were hidden.
     pub truth: [f64; 4],
+    /// Whether the sample is in the movement phase (the one scored).
     pub movement: bool,
 }
 
 /// One Fusion sample: seconds, deg/s, g, µT.
 #[derive(Clone, Copy, Debug)]
 pub struct FusionSample {
+    /// Time stamp, s.
     pub time: f64,
+    /// Angular rate, deg/s.
     pub gyr_deg: Cvec3,
+    /// Specific force, g.
     pub acc_g: Cvec3,
+    /// Magnetic field, µT.
     pub mag: Cvec3,
 }
 
 /// A recording, told apart by its header row.
 pub enum Recording {
+    /// A BROAD trial.
     Broad(Vec<BroadSample>),
+    /// x-io's Fusion sample log.
     Fusion(Vec<FusionSample>),
 }
 
@@ -130,4 +142,43 @@ fn fields<const N: usize>(line: &str, line_number: usize) -> Result<[f64; N], St
 
 fn vec3(x: f64, y: f64, z: f64) -> Cvec3 {
     Cvec3::new(x as f32, y as f32, z as f32)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bad_rows_are_reported_with_their_line_number() {
+        let header = BROAD_HEADER;
+        let good = "0.1,0,0,0,0,9.81,0,16,-41,1,0,0,0,1";
+        let cases = [
+            (
+                format!("{header}\n{good}\n0.1,0,0,x,0,9.81,0,16,-41,1,0,0,0,1\n"),
+                "line 3, column 4",
+            ),
+            (
+                format!("{header}\n{good}\n0.1,0,0\n"),
+                "line 3: 14 columns expected, found 3",
+            ),
+            (
+                format!("{header}\n{good},7\n"),
+                "line 2: more than 14 columns",
+            ),
+            (
+                format!("{header}\n0.1,0,0,0,0,9.81,0,16,-41,1,0,0,0,2\n"),
+                "line 2: movement must be 0 or 1",
+            ),
+            ("a,b\n1,2\n".to_string(), "line 1: unknown header"),
+        ];
+        for (text, want) in cases {
+            match parse(&text) {
+                Err(e) => assert!(e.contains(want), "{e:?} should say {want:?}"),
+                Ok(_) => panic!("{text:?} parsed"),
+            }
+        }
+        assert!(
+            matches!(parse(&format!("{header}\n{good}\n")), Ok(Recording::Broad(s)) if s.len() == 1)
+        );
+    }
 }

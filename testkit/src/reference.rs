@@ -1,0 +1,74 @@
+//! The f64 side of every accuracy measurement: conversions to nalgebra's
+//! types, rotation angles between quaternions, and the notes' power
+//! operator and slerp in f64 (`rigtform_proofs::reference`, which the
+//! on-target tests use too).
+
+use nalgebra as na;
+use rigtform::{Cvec3, Quat};
+use rigtform_proofs::reference::Quat64;
+
+/// `q` in f64, exactly.
+pub fn to_f64(q: Quat) -> na::Quaternion<f64> {
+    na::Quaternion::new(q.w as f64, q.x as f64, q.y as f64, q.z as f64)
+}
+
+/// `q` rounded to f32.
+pub fn to_f32(q: na::Quaternion<f64>) -> Quat {
+    Quat::new(q.w as f32, q.i as f32, q.j as f32, q.k as f32)
+}
+
+/// `v` in f64, exactly.
+pub fn vec_to_f64(v: Cvec3) -> na::Vector3<f64> {
+    na::Vector3::new(v.x as f64, v.y as f64, v.z as f64)
+}
+
+/// The angle of the rotation between two quaternions, up to sign and
+/// scale, in f64: `2 atan2(|v|, |w|)` of `b^-1 a` (accurate near 0 and pi).
+///
+/// ```
+/// use rigtform::Quat;
+/// use rigtform_testkit::{rotation_angle64, to_f64};
+/// let (a, b) = (Quat::from_rotation_x(0.25), Quat::from_rotation_x(1.0));
+/// assert!((rotation_angle64(to_f64(a), to_f64(-b)) - 0.75).abs() < 1e-6);
+/// ```
+pub fn rotation_angle64(a: na::Quaternion<f64>, b: na::Quaternion<f64>) -> f64 {
+    Quat64::angle_between(to_reference(a), to_reference(b))
+}
+
+/// The angle between a computed f32 rotation and an f64 reference.
+pub fn angle_error(got: Quat, want: na::Quaternion<f64>) -> f64 {
+    rotation_angle64(to_f64(got), want)
+}
+
+fn to_reference(q: na::Quaternion<f64>) -> Quat64 {
+    Quat64 {
+        w: q.w,
+        x: q.i,
+        y: q.j,
+        z: q.k,
+    }
+}
+
+fn from_reference(q: Quat64) -> na::Quaternion<f64> {
+    na::Quaternion::new(q.w, q.x, q.y, q.z)
+}
+
+/// The notes' power operator in f64: `phi = atan2(|v|, w)`,
+/// `(cos(alpha phi), sin(alpha phi) v/|v|)`; a pure real negative `q`
+/// turns about x.
+pub fn pow64(q: na::Quaternion<f64>, alpha: f64) -> na::Quaternion<f64> {
+    from_reference(to_reference(q).pow(alpha))
+}
+
+/// `pow(cn(q1 q0^-1), alpha) q0` in f64, on the normalized inputs.
+pub fn slerp64(
+    q0: na::Quaternion<f64>,
+    q1: na::Quaternion<f64>,
+    alpha: f64,
+) -> na::Quaternion<f64> {
+    from_reference(Quat64::slerp(
+        to_reference(q0.normalize()),
+        to_reference(q1.normalize()),
+        alpha,
+    ))
+}
