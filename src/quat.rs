@@ -566,7 +566,7 @@ impl Quat {
             let m = float::sqrt(dir.norm_squared());
             // Written to be true for a NaN m too. The negated comparison is
             // 12 bytes smaller on the Cortex-M4F than `m.is_nan() || m < ..`,
-            // which slerp's 2 KiB of flash needs (`embedded/bench.sh budget`).
+            // which slerp's 2 KiB of flash needs (`cargo xtask budget`).
             #[allow(clippy::neg_cmp_op_on_partial_ord)]
             let no_direction = !(m >= MIN_ORTHOGONAL);
             if no_direction {
