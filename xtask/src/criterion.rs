@@ -252,7 +252,8 @@ mod tests {
             timing("q*q", "rigtform", 2.0),
             timing("q*q", "glam", 1.0),
             timing("slerp", "rigtform", 50.0),
-            timing("slerp", "rigtform (fast-math)", 40.0),
+            // Faster than every peer: still not a peer.
+            timing("slerp", "rigtform (fast-math)", 10.0),
             timing("pow", "rigtform", 3.0),
             timing("stale", "rigtform", 1.0),
         ];
@@ -272,7 +273,7 @@ mod tests {
 | operation | rigtform | rigtform (fast-math) | glam | nalgebra | rigtform / fastest peer |
 | --- | --- | --- | --- | --- | --- |
 | q*q | 2.00 | - | 1.00 | - | 2.00 |
-| slerp | 50.00 | 40.00 | 20.00 | 25.00 | 2.50 |
+| slerp | 50.00 | 10.00 | 20.00 | 25.00 | 2.50 |
 | pow | 3.00 | - | - | - | - |
 ";
         assert_eq!(t, expected);

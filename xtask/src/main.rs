@@ -53,7 +53,11 @@ use clap::{Parser, Subcommand};
 
 /// The command line.
 #[derive(Parser)]
-#[command(name = "cargo xtask", about = "rigtform's measurements")]
+#[command(
+    name = "cargo xtask",
+    bin_name = "cargo xtask",
+    about = "rigtform's measurements"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Cmd,

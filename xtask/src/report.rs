@@ -147,7 +147,15 @@ fn accuracy(draws: u64, fast_math: bool) -> Result<String> {
     if fast_math {
         cmd.arg("--rigtform-only");
     }
-    say(format!("accuracy: {cmd:?}"));
+    say(format!(
+        "accuracy: cargo run --release -p {COMPARE} --bin {ACCURACY}{} -- {draws}{}",
+        if fast_math {
+            " --features fast-math"
+        } else {
+            ""
+        },
+        if fast_math { " --rigtform-only" } else { "" }
+    ));
     Ok(without_leading_comment(&tools::stdout_of(&mut cmd)?).to_owned())
 }
 
