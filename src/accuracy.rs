@@ -3,7 +3,7 @@
 //! Every bound a doc comment quotes is one of these constants, and the tests
 //! that measure it (`tests/differential.rs` against an f64 reference,
 //! `tests/edge_cases.rs`, `tests/attitude.rs`, `tests/broad.rs`, the
-//! smoother's unit test and the kernel sweeps in `src/float.rs`) assert
+//! smoother's unit test and the kernel sweeps in `src/float/`) assert
 //! against the same constant, so the docs cannot promise a tolerance the
 //! tests do not check. Unless its doc says otherwise (a fixed chain of
 //! products, a recorded trial), each value is the largest error measured over
@@ -44,7 +44,7 @@
 //! | [`RENORMALIZED_CHAIN_NORM_ERROR`] | 1.5e-7 | 1.5e-7 |
 
 /// The bounds that depend on the float backend (here the default f32
-/// kernels of `src/float.rs`): measured maxima over 10^7 draws in the
+/// kernels of `src/float/`): measured maxima over 10^7 draws in the
 /// comments, rounded up by about 25 %.
 #[cfg(not(feature = "fast-math"))]
 mod backend {
@@ -77,8 +77,33 @@ mod backend {
     pub const SMOOTHER_DECAY_MAX_ERROR: f32 = 1.25e-2; // 9.920e-3
 }
 
-/// Relative error of the square root kernel (`src/float.rs`, `sweep_sqrt`).
+/// Relative error of the square root kernel (`src/float/sqrt.rs`, `sweep_sqrt`).
 pub const SQRT_MAX_REL_ERROR: f32 = 6.0e-8; // 5.960e-8: libm sqrtf is correctly rounded
+
+// The default backend's f32 kernels (`src/float/`), in ulps of the exact
+// result. Each bound is the largest error over every f32 of the kernel's
+// range (`cargo test --release --lib -- --ignored exhaustive_kernel_sweep`;
+// the maximum and where it occurs in the comment), rounded up; every test
+// run checks every 997th f32 against the same bound. With `fast-math`,
+// micromath answers inside its ranges, and these kernels take the rest
+// (zero, subnormal, huge and non-finite arguments).
+
+/// The atan2 kernel, in ulps: `(t, 1)`, `(1, t)`, `(t, -1)`, `(1, -t)` and
+/// `(1 + t, 1)` for every f32 `t` in [0, 1], and random pairs at every
+/// scale.
+pub const ATAN2_MAX_ULP: f32 = 1.6; // 1.291 at t = 0.54892975
+/// The arctangent polynomial inside the atan2 kernel, in ulps, on
+/// [0, tan(1/2)].
+pub const ATAN_POLY_MAX_ULP: f32 = 1.0; // 0.821 at 0.5461395
+/// The sine and cosine polynomials inside the sine and cosine kernel, in
+/// ulps, on [0, pi/4].
+pub const SIN_COS_POLY_MAX_ULP: f32 = 1.0; // sin 0.805 at 0.7828049, cos 0.749 at 0.7086515
+/// The sine and cosine kernel, in ulps, on [-3 pi/4, 3 pi/4]: every angle
+/// `slerp` hands it for `alpha` in [0, 1].
+pub const SIN_COS_NARROW_MAX_ULP: f32 = 1.0; // 0.858 at 2.3555665
+/// The sine and cosine kernel, in ulps, for every finite argument beyond
+/// 3 pi/4 (exact argument reduction).
+pub const SIN_COS_MAX_ULP: f32 = 1.25; // 0.985 at 2.3279488e23
 /// Absolute error, in radians, of the atan2 kernel (`sweep_atan2`).
 pub const ATAN2_MAX_ABS_ERROR: f32 = backend::ATAN2_MAX_ABS_ERROR;
 /// Absolute error of the sine and cosine kernel on [-10, 10] (`sweep_sin_cos`).

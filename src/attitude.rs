@@ -29,10 +29,12 @@
 //! - [`OrientationFilter`] with [`FilterParams`]: gyroscope + accelerometer
 //!   (+ magnetometer) fusion with gyro-bias estimation.
 
-mod exp_map;
 mod filter;
 mod low_pass;
+mod params;
+mod rest;
 mod smoother;
 
-pub use filter::{FilterParams, OrientationFilter};
+pub use filter::OrientationFilter;
+pub use params::FilterParams;
 pub use smoother::Smoother;

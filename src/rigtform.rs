@@ -143,6 +143,7 @@ impl RigTForm {
     /// let i = a * a.inv();
     /// assert!(i.t.norm() < 1e-6 && i.r.angle_to(Quat::IDENTITY) < 1e-6);
     /// ```
+    #[doc(alias = "inverse")]
     #[inline]
     #[must_use]
     pub fn inv(self) -> Self {
@@ -179,6 +180,8 @@ impl RigTForm {
     /// assert_eq!(mid.t, Cvec3::new(1.0, 0.0, 0.0));
     /// assert!(mid.r.angle_to(Quat::from_rotation_z(PI / 4.0)) < 1e-6);
     /// ```
+    #[doc(alias = "lerp")]
+    #[doc(alias = "slerp")]
     #[must_use]
     pub fn interpolate(self, other: Self, alpha: f32) -> Self {
         Self::new(self.t.lerp(other.t, alpha), self.r.slerp(other.r, alpha))

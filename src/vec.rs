@@ -123,6 +123,7 @@ impl Cvec3 {
     /// ```
     /// assert_eq!(rigtform::Cvec3::new(1.0, 2.0, 2.0).norm_squared(), 9.0);
     /// ```
+    #[doc(alias = "length_squared")]
     #[inline]
     #[must_use]
     pub fn norm_squared(self) -> f32 {
@@ -143,6 +144,7 @@ impl Cvec3 {
     /// assert_eq!(Cvec3::new(3.0, 4.0, 0.0).norm(), 5.0);
     /// assert_eq!(Cvec3::new(3e30, 4e30, 0.0).norm(), 5e30); // no overflow
     /// ```
+    #[doc(alias = "length")]
     #[inline]
     #[must_use]
     pub fn norm(self) -> f32 {
@@ -316,6 +318,7 @@ impl Cvec4 {
     /// ```
     /// assert_eq!(rigtform::Cvec4::new(1.0, 1.0, 1.0, 1.0).norm_squared(), 4.0);
     /// ```
+    #[doc(alias = "length_squared")]
     #[inline]
     #[must_use]
     pub fn norm_squared(self) -> f32 {
@@ -328,6 +331,7 @@ impl Cvec4 {
     /// ```
     /// assert_eq!(rigtform::Cvec4::new(1e30, 1e30, 1e30, 1e30).norm(), 2e30);
     /// ```
+    #[doc(alias = "length")]
     #[inline]
     #[must_use]
     pub fn norm(self) -> f32 {

@@ -114,7 +114,7 @@ fn integrate_step_is_within_its_bound() {
     norm.check(accuracy::NORMALIZE_MAX_NORM_ERROR);
 }
 
-/// The property: integrating a constant rate `omega` for `T`
+/// Integrating a constant rate `omega` for `T`
 /// seconds is the rotation by `|omega| T` about `omega`, within the
 /// per-step bound times the number of steps.
 #[test]

@@ -1,4 +1,4 @@
-//! The numerics contract of DESIGN.md, item by item, on the edge values of
+//! The numerics contract (the README's "The contract"), item by item, on the edge values of
 //! `testkit::EDGE_F32` (zeros, subnormals, +-1, 1 +- ulp, 1e30, f32::MAX,
 //! infinities, NaN) and on random bit patterns.
 
@@ -490,10 +490,10 @@ fn renormalized_product_is_the_same_rotation_as_the_plain_one() {
     assert!(is_nan_quat(Quat::NAN.mul_renormalized(Quat::IDENTITY)));
 }
 
-/// Regression, found by the `slerp` fuzz target: unit inputs one rotation
-/// to within an ulp but on opposite hemispheres (cn flips one), and an
-/// extrapolating alpha. The direction to turn in was subnormal and lost its
-/// precision in the normalization, and `slerp` returned infinities.
+/// Unit inputs one rotation to within an ulp but on opposite hemispheres
+/// (cn flips one), and an extrapolating alpha (inputs from the `slerp` fuzz
+/// target's seeds): the direction to turn in is subnormal, and must not
+/// lose its precision in the normalization (infinities would come out).
 #[test]
 fn slerp_extrapolated_from_nearly_antipodal_inputs_is_unit() {
     let (h, t) = (8.8e-44, -4.408_238_2e-18);
@@ -514,16 +514,16 @@ fn slerp_extrapolated_from_nearly_antipodal_inputs_is_unit() {
     }
 }
 
-/// Regression, found by the `slerp` fuzz target: nearly antipodal inputs of
-/// very different scales, extrapolated far. One Gram-Schmidt pass left the
-/// direction of the turn off orthogonal by ulps of the rounding it removed,
-/// and the result off unit by 2e-6.
+/// Nearly antipodal inputs of very different scales, extrapolated far
+/// (inputs from the `slerp` fuzz target's seeds): one Gram-Schmidt pass
+/// leaves the direction of the turn off orthogonal by ulps of the rounding
+/// it removes, which must not show in the norm (by 2e-6, unchecked).
 #[test]
 fn slerp_extrapolated_far_from_nearly_antipodal_inputs_of_any_scale_is_unit() {
     let b = Quat::new(2.195_525_5e-18, -26_711_958.0, -26_711_958.0, -26_711_958.0).normalize();
     // The second first input is the same rotation as -b to within 1e-22
-    // rad: most of the difference is rounding along a, which once made a
-    // turn of 2.7e7 times that rounding.
+    // rad: most of the difference is rounding along a, which alpha must
+    // not blow up into a turn (2.7e7 times that rounding).
     for w in [1.599_975_6, 9.094_808e-14] {
         let a = Quat::new(w, 865_309_600.0, 865_309_600.0, 865_309_600.0).normalize();
         for alpha in [-26_711_958.0, 26_711_958.0, -3e5, 1e9, -1.511_584e21] {

@@ -13,12 +13,21 @@ fn bytes(values: &[f32]) -> Vec<u8> {
     values.iter().flat_map(|v| v.to_le_bytes()).collect()
 }
 
+/// Replaces the `edge-*` seeds of `target`; other seeds (the inputs of
+/// regression tests) stay.
 fn write(target: &str, seeds: Vec<Vec<u8>>) -> std::io::Result<()> {
     let dir = Path::new("fuzz/seeds").join(target);
-    if dir.exists() {
-        fs::remove_dir_all(&dir)?;
-    }
     fs::create_dir_all(&dir)?;
+    for entry in fs::read_dir(&dir)? {
+        let path = entry?.path();
+        if path
+            .file_name()
+            .and_then(|n| n.to_str())
+            .is_some_and(|n| n.starts_with("edge-"))
+        {
+            fs::remove_file(path)?;
+        }
+    }
     for (i, seed) in seeds.iter().enumerate() {
         fs::write(dir.join(format!("edge-{i:03}")), seed)?;
     }

@@ -1,9 +1,11 @@
 //! The exponential and logarithm maps of rotations, and one step of gyro
 //! integration built on them: [`Quat::from_scaled_axis`],
-//! [`Quat::to_scaled_axis`], [`Quat::integrate`].
+//! [`Quat::to_scaled_axis`], [`Quat::integrate`]. Consistent with the
+//! power operator: `exp(a log q)` is `q.pow(a)`.
 
+use super::power::Polar;
+use super::Quat;
 use crate::float;
-use crate::quat::{Polar, Quat};
 use crate::vec::Cvec3;
 
 /// Below this squared angle (0.1, an angle of 0.316 rad), `from_scaled_axis`

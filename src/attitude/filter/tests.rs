@@ -1,0 +1,441 @@
+//! The filter on synthetic motion: a wrong start, gyro bias in motion and
+//! at rest, strong linear acceleration, magnetic disturbances and bad
+//! input, each checked against the true attitude of the simulation.
+
+use super::*;
+use crate::accuracy;
+
+const G: f32 = 9.81;
+/// Berlin's field in ENU, µT.
+const FIELD: Cvec3 = Cvec3::new(0.0, 16.0, -41.0);
+
+/// The inclination error of `estimate` against `truth`, in radians:
+/// the angle between the up directions they predict.
+fn inclination_error(estimate: Quat, truth: Quat) -> f32 {
+    let up = (estimate.inv() * Cvec3::Z).dot(truth.inv() * Cvec3::Z);
+    float::atan2(
+        (estimate.inv() * Cvec3::Z)
+            .cross(truth.inv() * Cvec3::Z)
+            .norm(),
+        up,
+    )
+}
+
+/// A synthetic recording: the true attitude turns with body rate
+/// `rate(t)` from `start`; the sensors see it exactly, plus `bias` on
+/// the gyro and `linear(t)` (earth frame) on the accelerometer. Calls
+/// `check(t, truth, estimate)` after each update.
+#[allow(clippy::too_many_arguments)]
+fn simulate(
+    filter: &mut OrientationFilter,
+    start: Quat,
+    seconds: f32,
+    hz: f32,
+    bias: Cvec3,
+    rate: impl Fn(f32) -> Cvec3,
+    linear: impl Fn(f32) -> Cvec3,
+    with_mag: bool,
+    mut check: impl FnMut(f32, Quat, Quat),
+) {
+    let dt = 1.0 / hz;
+    let mut truth = start;
+    for i in 0..(seconds * hz) as u32 {
+        let t = i as f32 * dt;
+        let omega = rate(t);
+        truth = truth.integrate(omega, dt);
+        let acc = truth.inv() * (Cvec3::new(0.0, 0.0, G) + linear(t));
+        let gyr = omega + bias;
+        let q = if with_mag {
+            filter.update_with_mag(gyr, acc, truth.inv() * FIELD, dt)
+        } else {
+            filter.update(gyr, acc, dt)
+        };
+        check(t + dt, truth, q);
+    }
+}
+
+/// A slow tumbling motion about all three axes.
+fn tumble(t: f32) -> Cvec3 {
+    Cvec3::new(
+        0.6 * (0.7 * t).sin(),
+        0.5 * (0.45 * t).cos(),
+        0.4 * (0.3 * t + 1.0).sin(),
+    )
+}
+
+#[test]
+fn state_size_is_as_documented() {
+    assert_eq!(core::mem::size_of::<OrientationFilter>(), 156);
+    assert_eq!(core::mem::size_of::<FilterParams>(), 44);
+}
+
+#[test]
+fn converges_from_a_wrong_initial_attitude() {
+    let truth0 = Quat::from_rotation_z(0.4) * Quat::from_rotation_x(0.2);
+    let wrong = Quat::from_axis_angle(Cvec3::new(1.0, 1.0, 0.3), 0.6) * truth0;
+    for (hz, with_mag) in [(100.0, false), (1000.0, false), (100.0, true)] {
+        let mut f = OrientationFilter::with_attitude(FilterParams::DEFAULT, wrong);
+        let (mut at_5s, mut end_incl, mut end_total) = (0.0, 0.0, 0.0);
+        // With the magnetometer, longer: the field's reference was taken
+        // at the wrong inclination, and the disturbance gate stays shut
+        // until the reference has followed the field (60 s).
+        let seconds = if with_mag { 180.0 } else { 60.0 };
+        simulate(
+            &mut f,
+            truth0,
+            seconds,
+            hz,
+            Cvec3::ZERO,
+            tumble,
+            |_| Cvec3::ZERO,
+            with_mag,
+            |t, truth, q| {
+                if (t - 5.0).abs() < 0.5 / hz {
+                    at_5s = inclination_error(q, truth);
+                }
+                end_incl = inclination_error(q, truth);
+                end_total = q.angle_to(truth);
+            },
+        );
+        let start = inclination_error(wrong, truth0);
+        std::println!("{hz} Hz, mag {with_mag}: inclination {start} -> {at_5s} (5 s) -> {end_incl} ({seconds} s), total {end_total}");
+        assert!(
+            at_5s < 0.5 * start && end_incl < 0.2f32.to_radians(),
+            "{hz} {with_mag}"
+        );
+        if with_mag {
+            assert!(end_total < 0.5f32.to_radians(), "{end_total}");
+        }
+    }
+}
+
+#[test]
+fn learns_a_constant_gyro_bias_in_motion() {
+    // Never at rest: only the corrections can reveal the bias. The
+    // accelerometer reads 3 % high, within the gates.
+    let bias = Cvec3::new(0.012, -0.015, 0.009);
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let mut worst_late: f32 = 0.0;
+    simulate(
+        &mut f,
+        Quat::IDENTITY,
+        300.0,
+        100.0,
+        bias,
+        tumble,
+        |_| Cvec3::new(0.0, 0.0, 0.03 * G),
+        true,
+        |t, truth, q| {
+            if t > 200.0 {
+                worst_late = worst_late.max(q.angle_to(truth));
+            }
+        },
+    );
+    let error = (f.bias() - bias).norm();
+    std::println!(
+        "bias error after 300 s: {error:.2e} rad/s of {:.2e}; late attitude error {worst_late:.2e}",
+        bias.norm()
+    );
+    assert!(error < 0.1 * bias.norm(), "{:?}", f.bias());
+    assert!(!f.is_resting());
+    assert!(worst_late < 0.5f32.to_radians(), "{worst_late}");
+}
+
+#[test]
+fn learns_the_bias_at_rest() {
+    let bias = Cvec3::new(-0.02, 0.01, 0.025);
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let start = Quat::from_rotation_y(0.5);
+    simulate(
+        &mut f,
+        start,
+        20.0,
+        200.0,
+        bias,
+        |_| Cvec3::ZERO,
+        |_| Cvec3::ZERO,
+        false,
+        |_, _, _| {},
+    );
+    assert!(f.is_resting());
+    assert!((f.bias() - bias).norm() < 1e-4, "{:?}", f.bias());
+    // Above max_bias: clipped, and a steady turn that fast is no rest.
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let fast = Cvec3::new(0.0, 0.0, 0.1);
+    simulate(
+        &mut f,
+        start,
+        20.0,
+        200.0,
+        fast,
+        |_| Cvec3::ZERO,
+        |_| Cvec3::ZERO,
+        false,
+        |_, _, _| {},
+    );
+    assert!(!f.is_resting());
+    assert!(f.bias().norm() <= FilterParams::DEFAULT.max_bias * 1.000_001);
+}
+
+#[test]
+fn a_stored_bias_is_subtracted_from_the_first_sample() {
+    let bias = Cvec3::new(0.02, -0.01, 0.02);
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    f.set_bias(bias);
+    assert_eq!(f.bias(), bias);
+    let acc = Cvec3::new(0.0, 0.0, G);
+    // A second at 100 Hz, too short for rest detection: only the stored
+    // bias keeps the attitude from drifting by 0.03 rad.
+    for _ in 0..100 {
+        f.update(bias, acc, 0.01);
+    }
+    assert!(
+        f.attitude().angle_to(Quat::IDENTITY) < 1e-5,
+        "{:?}",
+        f.attitude()
+    );
+}
+
+#[test]
+fn the_first_field_sets_the_heading_at_once() {
+    let truth = Quat::from_rotation_z(-2.0) * Quat::from_rotation_y(0.3);
+    let acc = truth.inv() * Cvec3::new(0.0, 0.0, G);
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let q = f.update_with_mag(Cvec3::ZERO, acc, truth.inv() * FIELD, 0.01);
+    // One atan2 and one sine-cosine: 1e-5 with libm, their errors with fast-math.
+    let tol = (accuracy::ATAN2_MAX_ABS_ERROR + 2.0 * accuracy::SIN_COS_MAX_ABS_ERROR).max(1e-5);
+    assert!(q.angle_to(truth) < tol, "{q:?}");
+}
+
+#[test]
+fn a_disturbed_field_is_kept_from_the_heading() {
+    // Ten seconds of a clean field, then ten in which it is turned by
+    // 40 degrees about the vertical and 30 % stronger.
+    let disturbance = Quat::from_rotation_z(0.7);
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let mut truth = Quat::from_rotation_x(0.1);
+    let dt = 0.01;
+    let mut worst: f32 = 0.0;
+    for i in 0..2000 {
+        let t = i as f32 * dt;
+        let rate = tumble(t) * 0.5;
+        truth = truth.integrate(rate, dt);
+        let field = if t < 10.0 {
+            FIELD
+        } else {
+            disturbance * FIELD * 1.3
+        };
+        let acc = truth.inv() * Cvec3::new(0.0, 0.0, G);
+        let q = f.update_with_mag(rate, acc, truth.inv() * field, dt);
+        worst = worst.max(q.angle_to(truth));
+    }
+    assert!(worst < 0.5f32.to_radians(), "{}", worst.to_degrees());
+}
+
+#[test]
+fn a_sustained_acceleration_with_a_vertical_part_stops_the_correction() {
+    // At rest, then 10 s of 0.3 g forwards and 0.5 g upwards (a lift
+    // that also moves): without the gate, the average would tilt by
+    // atan(0.3 / 1.5), 11 degrees; the gate closes at 1.1 g, about 3.
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let push = |t: f32| {
+        if t > 5.0 && t < 15.0 {
+            Cvec3::new(0.3 * G, 0.0, 0.5 * G)
+        } else {
+            Cvec3::ZERO
+        }
+    };
+    let mut worst: f32 = 0.0;
+    simulate(
+        &mut f,
+        Quat::IDENTITY,
+        15.0,
+        100.0,
+        Cvec3::ZERO,
+        |_| Cvec3::ZERO,
+        push,
+        false,
+        |_, truth, q| {
+            worst = worst.max(inclination_error(q, truth));
+        },
+    );
+    std::println!(
+        "lift: worst {:.2} deg, bias {:?}",
+        worst.to_degrees(),
+        f.bias()
+    );
+    assert!(worst < 4f32.to_radians(), "{}", worst.to_degrees());
+    // Nor does the bias learn from the corrections made meanwhile.
+    assert!(f.bias().norm() < 1e-4, "{:?}", f.bias());
+}
+
+#[test]
+fn the_bias_estimate_is_clipped_to_max_bias() {
+    let max = FilterParams::DEFAULT.max_bias;
+    let bias = Cvec3::new(0.05, 0.0, 0.0);
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    f.set_bias(Cvec3::new(0.03, 0.0, 0.0));
+    simulate(
+        &mut f,
+        Quat::IDENTITY,
+        200.0,
+        100.0,
+        bias,
+        tumble,
+        |_| Cvec3::ZERO,
+        false,
+        |_, _, _| {},
+    );
+    let b = f.bias();
+    assert!((b.norm() - max).abs() < 1e-6 && b.x > 0.99 * max, "{b:?}");
+}
+
+#[test]
+fn vibration_is_no_rest() {
+    // A still gyro on a shaking table: the accelerometer moves by 1 m/s².
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let bias = Cvec3::new(0.01, 0.0, 0.0);
+    let shake = |t: f32| Cvec3::new((30.0 * t).sin(), 0.0, 0.0);
+    simulate(
+        &mut f,
+        Quat::IDENTITY,
+        10.0,
+        200.0,
+        bias,
+        |_| Cvec3::ZERO,
+        shake,
+        false,
+        |_, _, _| {},
+    );
+    assert!(!f.is_resting());
+}
+
+#[test]
+fn averages_out_strong_linear_acceleration() {
+    // Shaken sideways at 2 g, 1.5 Hz, and up and down at 1 g, 2.3 Hz.
+    let shake = |t: f32| {
+        let w1 = 2.0 * core::f32::consts::PI * 1.5;
+        let w2 = 2.0 * core::f32::consts::PI * 2.3;
+        Cvec3::new(2.0 * G * (w1 * t).sin(), 0.0, G * (w2 * t).sin())
+    };
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let mut worst: f32 = 0.0;
+    let start = Quat::from_rotation_x(0.3);
+    let slow = |t: f32| tumble(t) * 0.3;
+    simulate(
+        &mut f,
+        start,
+        60.0,
+        200.0,
+        Cvec3::ZERO,
+        slow,
+        shake,
+        false,
+        // Shaking that starts at full swing sets the sensor moving at
+        // 2 g / w1 = 2.1 m/s on average, a velocity step that takes
+        // about 5 tau_acc to pass; after that, the steady state.
+        |t, truth, q| {
+            if t > 15.0 {
+                worst = worst.max(inclination_error(q, truth));
+            }
+        },
+    );
+    std::println!(
+        "shaken: worst inclination error {:.3} deg",
+        worst.to_degrees()
+    );
+    // One sample's direction is off by up to 63 degrees; the two-stage
+    // average leaves 2 g / (1 + (w1 tau_acc / 2)^2) = 0.01 g, 0.6 degrees.
+    assert!(worst < 1f32.to_radians(), "{worst}");
+}
+
+#[test]
+fn a_disturbed_magnetometer_cannot_tilt_the_estimate() {
+    let mut clean = OrientationFilter::new(FilterParams::DEFAULT);
+    let mut disturbed = clean;
+    let dt = 0.01;
+    let mut truth = Quat::from_rotation_x(0.2);
+    let mut worst: f32 = 0.0;
+    for i in 0..6000 {
+        let t = i as f32 * dt;
+        truth = truth.integrate(tumble(t), dt);
+        let (gyr, acc) = (tumble(t), truth.inv() * Cvec3::new(0.0, 0.0, G));
+        // A steel cabinet: a field of any direction, changing.
+        let junk = Cvec3::new(30.0 * (0.5 * t).sin(), -20.0, 60.0 * (0.2 * t).cos());
+        clean.update_with_mag(gyr, acc, truth.inv() * FIELD, dt);
+        let q = disturbed.update_with_mag(gyr, acc, truth.inv() * FIELD + junk, dt);
+        worst = worst.max(inclination_error(q, truth));
+    }
+    assert!(worst < 0.05f32.to_radians(), "{worst}");
+}
+
+#[test]
+fn bad_input_is_reported_and_ignored() {
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let acc = Quat::from_rotation_x(0.4).inv() * Cvec3::new(0.0, 0.0, G);
+    let gyr = Cvec3::new(0.1, 0.0, 0.0);
+    for _ in 0..10 {
+        f.update(gyr, acc, 0.01);
+    }
+    let before = f;
+    // Compared as text: the unset magnetic reference is NaN.
+    let unchanged = |f: &OrientationFilter| std::format!("{f:?}") == std::format!("{before:?}");
+    for (g, d) in [
+        (Cvec3::NAN, 0.01),
+        (Cvec3::new(f32::INFINITY, 0.0, 0.0), 0.01),
+        (gyr, f32::NAN),
+        (gyr, f32::INFINITY),
+    ] {
+        assert!(!f.update(g, acc, d).is_finite());
+        assert!(unchanged(&f));
+    }
+    assert_eq!(f.update(gyr, acc, 0.0), before.attitude());
+    assert_eq!(f.update(gyr, acc, -1.0), before.attitude());
+    assert!(unchanged(&f));
+    // No accelerometer information: the gyro alone.
+    for bad in [Cvec3::NAN, Cvec3::ZERO, Cvec3::new(f32::INFINITY, 0.0, 0.0)] {
+        let mut g = before;
+        let q = g.update(gyr, bad, 0.01);
+        let want = before.attitude().integrate(gyr, 0.01);
+        assert!(q.angle_to(want) < 1e-5, "{bad:?}");
+    }
+    // No usable field: no heading correction.
+    for bad in [Cvec3::NAN, Cvec3::ZERO, Cvec3::new(0.0, 0.0, -40.0)] {
+        let mut a = before;
+        let mut b = before;
+        assert_eq!(
+            a.update_with_mag(gyr, acc, bad, 0.01),
+            b.update(gyr, acc, 0.01),
+            "{bad:?}"
+        );
+    }
+    // NaN parameters: NaN out, no panic.
+    let mut n = OrientationFilter::new(FilterParams {
+        tau_acc: f32::NAN,
+        ..FilterParams::DEFAULT
+    });
+    assert!(!n.update(gyr, acc, 0.01).is_finite());
+    assert_eq!(n.attitude(), Quat::IDENTITY);
+    // Huge but finite values: no panic.
+    let mut h = OrientationFilter::new(FilterParams::DEFAULT);
+    let huge = Cvec3::new(f32::MAX, -f32::MAX, f32::MAX);
+    let _ = h.update_with_mag(huge, huge, huge, f32::MAX);
+    let _ = h.update_with_mag(gyr, acc, huge, 1e-30);
+}
+
+#[test]
+fn rotation_to_up_takes_the_vector_up() {
+    for u in [
+        Cvec3::new(0.3, -0.4, 0.866),
+        Cvec3::X,
+        Cvec3::new(0.0, 0.6, -0.8),
+        -Cvec3::Z,
+        Cvec3::Z,
+    ] {
+        let u = u.normalize();
+        let q = rotation_to_up(u);
+        assert!((q * u - Cvec3::Z).norm() < 1e-6, "{u:?}");
+        // About a horizontal axis: no heading.
+        assert!(q.z.abs() < 1e-7, "{u:?}");
+    }
+}

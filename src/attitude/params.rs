@@ -1,0 +1,129 @@
+//! [`FilterParams`]: the parameters of the [`OrientationFilter`](super::OrientationFilter),
+//! with the physics each default comes from.
+
+/// The parameters of an [`OrientationFilter`](super::OrientationFilter), with their units. One set,
+/// [`FilterParams::DEFAULT`], chosen from sensor and motion physics (see the
+/// field docs and the README's IMU section), not fitted to any recording.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[repr(C)]
+pub struct FilterParams {
+    /// Magnitude of gravity in the accelerometer's unit: 9.81 for m/s²,
+    /// 1.0 for g. Only the gates below use it (relative to it).
+    pub gravity: f32,
+    /// Time constant of the inclination correction, in seconds (default
+    /// 3 s): the delay of the low-pass that averages the accelerometer in
+    /// an almost inertial frame. Longer rejects linear accelerations better
+    /// (a velocity change `dv` leaks in as at most about
+    /// `2 dv / (e g tau_acc)` radians of tilt) but lets gyro errors drift
+    /// longer (about `residual bias * tau_acc`). With `dv` about 0.5 m/s
+    /// for hand-held motion and a residual bias of about 0.1 °/s, the sum
+    /// is smallest between 3 and 5 s; 3 s is the low end, because gyro
+    /// scale errors during fast rotation also drift. Zero or negative: the
+    /// inclination follows each accelerometer sample (no averaging).
+    pub tau_acc: f32,
+    /// Time constant of the heading correction by the magnetometer, in
+    /// seconds (default 10 s). Indoor magnetic disturbances pass in seconds
+    /// as the sensor moves, while a residual gyro bias of 0.1 °/s about the
+    /// vertical drifts only 1° in 10 s.
+    pub tau_mag: f32,
+    /// Time constant, in seconds, with which the gyro bias follows the
+    /// corrections during motion (default 20 s): it has to be several times
+    /// `tau_acc` for the bias loop to stay well damped, and long enough to
+    /// average out the corrections that linear accelerations cause. The
+    /// bias changes with temperature over minutes. Infinite: no bias
+    /// estimation during motion.
+    pub tau_bias: f32,
+    /// Time constant, in seconds, of the bias estimate while at rest, where
+    /// the gyro reads its bias plus noise (default 3 s).
+    pub tau_bias_rest: f32,
+    /// Rest detection, gyro: the rate (rad/s) must stay within this of its
+    /// 0.5 s low-pass (default 2 °/s, 0.035 rad/s: above the noise of MEMS
+    /// gyros, below deliberate motion).
+    pub rest_gyro: f32,
+    /// The largest gyro bias the filter learns, in rad/s (default 2 °/s,
+    /// 0.035 rad/s, the zero-rate offset of a MEMS gyro after factory
+    /// calibration). The estimate is clipped to it; rest is only detected
+    /// while the low-passed gyro is below it, so that a slow steady turn is
+    /// not taken for a bias; and during motion, corrections faster than it
+    /// (convergence from a wrong start) are not taken for a bias either.
+    pub max_bias: f32,
+    /// Rest detection, accelerometer: the specific force must stay within
+    /// this fraction of `gravity` of its 0.5 s low-pass (default 0.05).
+    pub rest_acc: f32,
+    /// Rest detection: how long both conditions must hold, in seconds
+    /// (default 1.5 s).
+    pub rest_time: f32,
+    /// Acceleration-magnitude gate, a fraction of `gravity` (default 0.1):
+    /// the inclination is corrected only while the averaged specific force
+    /// is within it of `gravity`, and the bias learns from a correction only
+    /// while the current sample is within it too (a correction made during
+    /// strong linear acceleration says little about the gyro). The first
+    /// gate catches a sustained acceleration with a vertical part (a lift,
+    /// a climb); a sustained horizontal one (a car speeding up) changes the
+    /// magnitude only to second order: at 0.46 g sideways the averaged
+    /// vector is tilted 25° before it is 10 % longer than gravity. No
+    /// accelerometer-only filter can tell that from a tilt.
+    pub acc_gate: f32,
+    /// Magnetic disturbance gate, a fraction of the reference field
+    /// (default 0.1): the heading is corrected only while the measured
+    /// field, in the earth frame, is within this distance of the reference
+    /// field (its horizontal and vertical parts, so a change of the dip
+    /// counts as much as a change of strength). The reference is the first
+    /// field measured, and then follows the measurements with a 60 s time
+    /// constant, so that a new environment is accepted in the end (after
+    /// about a minute for a field 30 % off; longer the further off it is).
+    pub mag_gate: f32,
+}
+
+impl FilterParams {
+    /// The one parameter set used for every recording, chosen from physics
+    /// (each field's docs give the argument).
+    ///
+    /// ```
+    /// use rigtform::attitude::FilterParams;
+    /// assert_eq!(FilterParams::default(), FilterParams::DEFAULT);
+    /// assert_eq!(FilterParams::DEFAULT.tau_acc, 3.0);
+    /// ```
+    pub const DEFAULT: Self = Self {
+        gravity: 9.81,
+        tau_acc: 3.0,
+        tau_mag: 10.0,
+        tau_bias: 20.0,
+        tau_bias_rest: 3.0,
+        rest_gyro: 0.035,
+        max_bias: 0.035,
+        rest_acc: 0.05,
+        rest_time: 1.5,
+        acc_gate: 0.1,
+        mag_gate: 0.1,
+    };
+}
+
+impl FilterParams {
+    /// `true` if any parameter is NaN.
+    pub(super) fn has_nan(&self) -> bool {
+        [
+            self.gravity,
+            self.tau_acc,
+            self.tau_mag,
+            self.tau_bias,
+            self.tau_bias_rest,
+            self.rest_gyro,
+            self.max_bias,
+            self.rest_acc,
+            self.rest_time,
+            self.acc_gate,
+            self.mag_gate,
+        ]
+        .iter()
+        .any(|p| p.is_nan())
+    }
+}
+
+impl Default for FilterParams {
+    /// [`FilterParams::DEFAULT`].
+    fn default() -> Self {
+        Self::DEFAULT
+    }
+}

@@ -1,0 +1,120 @@
+//! The rest detector of the [`OrientationFilter`](super::OrientationFilter):
+//! while the sensor lies still, the gyro reads its bias.
+
+use super::low_pass::{low_pass, smoothing_factor};
+use super::FilterParams;
+use crate::vec::Cvec3;
+
+/// Time constant of the low-passes behind rest detection, in seconds.
+const REST_LOW_PASS_TAU: f32 = 0.5;
+
+/// Low-passes of the raw gyro and accelerometer in the sensor frame, and
+/// how long both samples have stayed close to them: at rest once that has
+/// lasted `rest_time` (with the thresholds of [`FilterParams`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub(super) struct RestDetector {
+    gyro: Cvec3,
+    acc: Cvec3,
+    /// Seconds that both conditions have held.
+    time: f32,
+}
+
+impl RestDetector {
+    /// A detector that starts its low-passes at the first sample.
+    pub(super) const fn new() -> Self {
+        Self {
+            // NaN: started by the first sample.
+            gyro: Cvec3::NAN,
+            acc: Cvec3::NAN,
+            time: 0.0,
+        }
+    }
+
+    /// Takes one sample (gyro `gyr`, accelerometer `acc`, both finite, `dt`
+    /// seconds after the previous one): still if the gyro is within
+    /// `rest_gyro` of its low-pass, the low-pass is below `max_bias`, and
+    /// the accelerometer is within `rest_acc` of gravity of its own.
+    #[inline]
+    pub(super) fn update(&mut self, gyr: Cvec3, acc: Cvec3, dt: f32, p: &FilterParams) {
+        if !self.acc.is_finite() {
+            self.gyro = gyr;
+            self.acc = acc;
+        }
+        let alpha = smoothing_factor(dt, REST_LOW_PASS_TAU);
+        let gyro = low_pass(self.gyro, gyr, alpha);
+        let acc_lp = low_pass(self.acc, acc, alpha);
+        let still = (gyr - gyro).norm() <= p.rest_gyro
+            && gyro.norm() <= p.max_bias
+            && (acc - acc_lp).norm() <= p.rest_acc * p.gravity;
+        *self = Self {
+            gyro,
+            acc: acc_lp,
+            time: if still { self.time + dt } else { 0.0 },
+        };
+    }
+
+    /// A sample without a usable accelerometer vector: no rest.
+    #[inline]
+    pub(super) fn interrupt(&mut self) {
+        self.time = 0.0;
+    }
+
+    /// `true` once the sensor has been still for `rest_time` seconds.
+    #[inline]
+    pub(super) fn is_resting(&self, p: &FilterParams) -> bool {
+        self.time >= p.rest_time
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const DT: f32 = 0.01;
+
+    fn gravity() -> Cvec3 {
+        Cvec3::new(0.0, 0.0, FilterParams::DEFAULT.gravity)
+    }
+
+    #[test]
+    fn rest_begins_after_rest_time_of_stillness() {
+        let p = FilterParams::DEFAULT;
+        let mut rest = RestDetector::new();
+        let bias = Cvec3::new(0.01, -0.01, 0.005);
+        let steps = (p.rest_time / DT) as u32;
+        for _ in 0..steps - 1 {
+            rest.update(bias, gravity(), DT, &p);
+        }
+        assert!(!rest.is_resting(&p));
+        for _ in 0..2 {
+            rest.update(bias, gravity(), DT, &p);
+        }
+        assert!(rest.is_resting(&p));
+        rest.interrupt();
+        assert!(!rest.is_resting(&p));
+    }
+
+    #[test]
+    fn a_steady_turn_faster_than_max_bias_is_no_rest() {
+        let p = FilterParams::DEFAULT;
+        let mut rest = RestDetector::new();
+        let turn = Cvec3::new(0.0, 0.0, 2.0 * p.max_bias);
+        for _ in 0..1000 {
+            rest.update(turn, gravity(), DT, &p);
+        }
+        assert!(!rest.is_resting(&p));
+    }
+
+    #[test]
+    fn a_jolt_restarts_the_clock() {
+        let p = FilterParams::DEFAULT;
+        let mut rest = RestDetector::new();
+        for _ in 0..1000 {
+            rest.update(Cvec3::ZERO, gravity(), DT, &p);
+        }
+        assert!(rest.is_resting(&p));
+        rest.update(Cvec3::ZERO, gravity() * 1.5, DT, &p);
+        assert!(!rest.is_resting(&p));
+    }
+}

@@ -1,0 +1,73 @@
+//! What the kernels' tests share: errors in ulps against an f64 reference,
+//! the arguments they sweep, and the largest error of a sweep checked
+//! against its bound (as libm tests its own kernels).
+
+/// Distance from `got` to the exact `want`, in ulps of `want` rounded to f32.
+pub(super) fn ulps(got: f32, want: f64) -> f64 {
+    let w = want as f32;
+    let ulp = (f32::from_bits(w.abs().to_bits() + 1) - w.abs()) as f64;
+    (got as f64 - want).abs() / ulp
+}
+
+/// `n` points evenly spread over [lo, hi], endpoints included.
+pub(super) fn spread(lo: f64, hi: f64, n: usize) -> impl Iterator<Item = f32> {
+    (0..=n).map(move |i| (lo + (hi - lo) * i as f64 / n as f64) as f32)
+}
+
+/// Every `step`-th f32 from `lo` to `hi` (both included, both >= 0).
+#[cfg(not(feature = "fast-math"))]
+pub(super) fn floats(lo: f32, hi: f32, step: usize) -> impl Iterator<Item = f32> {
+    (lo.to_bits()..=hi.to_bits())
+        .step_by(step)
+        .chain([hi.to_bits()])
+        .map(f32::from_bits)
+}
+
+/// The largest ulp error of one kernel over a sweep, with the argument that
+/// reached it, and the bound it must stay within.
+#[cfg(not(feature = "fast-math"))]
+pub(super) struct Worst {
+    what: &'static str,
+    ulps: f64,
+    at: f32,
+    bound: f32,
+}
+
+#[cfg(not(feature = "fast-math"))]
+impl Worst {
+    /// No error seen yet for the sweep `what`, bounded by `bound` ulps.
+    pub(super) fn new(what: &'static str, bound: f32) -> Self {
+        Self {
+            what,
+            ulps: 0.0,
+            at: 0.0,
+            bound,
+        }
+    }
+
+    /// Records the error `ulps` at the argument `at` (a NaN error counts as
+    /// the worst).
+    pub(super) fn see(&mut self, ulps: f64, at: f32) {
+        if ulps > self.ulps || ulps.is_nan() {
+            self.ulps = ulps;
+            self.at = at;
+        }
+    }
+
+    /// Prints the maximum, and fails if it exceeds the bound.
+    pub(super) fn check(&self) {
+        std::println!(
+            "{:<44} max {:.3} ulp at {:e}",
+            self.what,
+            self.ulps,
+            self.at
+        );
+        assert!(
+            self.ulps <= self.bound as f64,
+            "{} exceeds {} ulp at {:e}",
+            self.what,
+            self.bound,
+            self.at
+        );
+    }
+}

@@ -1,0 +1,350 @@
+//! Interpolation between rotations: [`Quat::slerp`] as the notes define it
+//! ("to interpolate"), [`Quat::nlerp`] and the n-way [`Quat::blend`] (the
+//! notes' "4D lerp and renormalization").
+
+use super::Quat;
+use crate::float::{self, scale_for_squares, ScaledSquares};
+
+/// 2^-21 (four ulps of 1): the cosine between a unit direction and the
+/// quaternion it must be orthogonal to, below which slerp's extrapolation
+/// takes the direction as orthogonal (a larger one would show in the norm
+/// of the result, by up to that much).
+const ORTHOGONAL_TO_ULPS: f32 = 4.768_371_6e-7;
+
+/// 2^-63: the smallest length of the direction of slerp's extrapolation (in
+/// the scaled units of `scale_for_squares`, where the difference it comes
+/// from is at least 2^-50 long) whose squares are still normal, so that it
+/// normalizes to full precision; shorter, it is rounding.
+const MIN_ORTHOGONAL: f32 = 1.084_202_2e-19;
+
+/// The bits of 2^125, the largest |alpha| slerp's extrapolation uses (an
+/// immediate operand on Arm, where f32::MAX / 4 would be a load).
+const ALPHA_LIMIT_BITS: u32 = 0x7e00_0000;
+
+/// How far the ratio of two squared norms may be from 1 for slerp to treat
+/// the inputs as unit: well above the rounding of f32 unit quaternions
+/// (a few 1e-7), well below any real drift.
+const NEARLY_UNIT: f32 = 1e-6;
+/// 2^-12 rad: below this, `sin(x) / sin(phi)` is `x / phi` to f32's
+/// precision (the two differ by less than `phi^2 / 6`, 2^-26).
+const SMALL_ANGLE: f32 = 1.0 / 4096.0;
+
+impl Quat {
+    /// Spherical linear interpolation, as the notes define it:
+    /// `cn(other * self.inv()).pow(alpha) * self`.
+    ///
+    /// The rotation `other * self.inv()` that takes `self` to `other` is
+    /// conditionally negated so it goes the short way (at most pi), then
+    /// scaled by `alpha`. The result moves from `self` to `other` about one
+    /// fixed axis with constant angular velocity, and is left invariant:
+    /// `(g * a).slerp(g * b, t) == g * a.slerp(b, t)` up to sign.
+    ///
+    /// - `alpha = 0` gives exactly `self`; `alpha = 1` gives the rotation of
+    ///   `other` (possibly written as `-other`).
+    /// - `alpha` outside [0, 1] extrapolates along the same great circle.
+    /// - Identical, nearly identical, antipodal (`other == -self`) and
+    ///   opposite (pi apart) inputs all give finite unit results; for
+    ///   rotations exactly pi apart both ways are equally short, and the sign
+    ///   of the rounded dot product picks one.
+    ///
+    /// # How it is evaluated
+    ///
+    /// `pow(alpha) * self` of the notes traces the great circle of the unit
+    /// 4-sphere through `self` and `other`, so for `alpha` in [0, 1] it is
+    /// evaluated in that plane, without the two f32 products (each of which
+    /// rounds by up to 2.5e-7 rad): the `w` of `other * self.inv()` is
+    /// `self.dot(other)` (its sign is the `cn`), its vector part has the
+    /// length of the part of `other` orthogonal to `self`, so the notes'
+    /// `phi` is the atan2 of the two, and the result is
+    /// `(sin((1 - alpha) phi) self + sin(alpha phi) other) / sin(phi)`.
+    /// Rounding errors common to both coefficients only scale the result,
+    /// and each endpoint is reached exactly (`slerp_in_plane`). Like `pow`,
+    /// this is scale-free: inputs a little off unit norm still give the
+    /// rotation between them. For extrapolation (where the two coefficients
+    /// grow and their rounding would show in the norm), and with the
+    /// `fast-math` feature (whose sines have absolute, not relative,
+    /// errors), the notes' formula itself is evaluated as a turn by
+    /// `alpha phi` from `self` (`slerp_extrapolated`; it rounds `alpha phi`,
+    /// so its error grows with the turn).
+    ///
+    /// # Preconditions
+    ///
+    /// `self` and `other` are unit quaternions, or nearly so (the result has
+    /// the norm of `self`, up to rounding). NaN or infinite inputs give
+    /// [`Quat::NAN`]. Every finite `alpha` gives a unit result; beyond
+    /// 2^125 in magnitude, where an ulp of `alpha phi` is many turns, it is
+    /// taken as +-2^125.
+    ///
+    /// # Accuracy
+    ///
+    /// Rotation error at most [`accuracy::SLERP_MAX_ANGLE_ERROR`](crate::accuracy::SLERP_MAX_ANGLE_ERROR)
+    /// `* max(1, |alpha| theta)` radians against an f64 reference, with
+    /// `theta = self.angle_to(other)`; norm within
+    /// [`accuracy::UNIT_NORM_ERROR`](crate::accuracy::UNIT_NORM_ERROR) of 1.
+    /// Measured on random pairs and on every edge class above
+    /// (`tests/differential.rs`). Extrapolating far (outside [-1, 2]) from
+    /// inputs less than about 1e-5 rad apart, the error can instead reach
+    /// `|alpha| 2^-22` rad, the resolution of their f32 difference.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use core::f32::consts::PI;
+    /// use rigtform::Quat;
+    /// let a = Quat::from_rotation_z(0.0);
+    /// let b = Quat::from_rotation_z(PI / 2.0);
+    /// assert!(a.slerp(b, 0.5).angle_to(Quat::from_rotation_z(PI / 4.0)) < 1e-6);
+    /// assert_eq!(a.slerp(b, 0.0), a);
+    /// // The short way: -b is the same rotation as b.
+    /// assert!(a.slerp(-b, 0.5).angle_to(Quat::from_rotation_z(PI / 4.0)) < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn slerp(self, other: Self, alpha: f32) -> Self {
+        // Zero times the sum of all inputs is NaN exactly when one of them
+        // is NaN or infinite, or when they are so huge that the sum
+        // overflows (where the squared norms below would overflow anyway):
+        // one test instead of nine, for flash.
+        let sum = self.w + self.x + self.y + self.z + other.w + other.x + other.y + other.z;
+        if ((sum + alpha) * 0.0).is_nan() {
+            return Self::NAN;
+        }
+        // The w of other * self.inv(); cn flips other when it is negative
+        // (multiplying by the sign, exactly, rather than branching on it).
+        let dot = self.dot(other);
+        let flip = 1.0f32.copysign(dot);
+        let other = other.map(|c| c * flip);
+        let dot = dot * flip;
+        // The part of other orthogonal to self, times |self|^2 (exactly
+        // orthogonal for any norm of self, in exact arithmetic), scaled by
+        // a power of two if its squares would underflow.
+        let n2 = self.norm_squared();
+        let u = scale_for_squares(other.weighted_sum(n2, self, -dot).to_array());
+        if u.sum == 0.0 || alpha == 0.0 {
+            // Identical or antipodal (or a zero input): the transition is
+            // the identity, and so is its every power. And alpha = 0.
+            return self;
+        }
+        // |u| = |self|^2 |other| sin(phi) and |self| dot = |self|^2 |other|
+        // cos(phi), both times u.scale: the notes' phi in [0, pi/2].
+        let n = float::sqrt(n2);
+        let beta = float::sqrt(u.sum);
+        let phi = float::atan2(beta, n * dot * u.scale);
+        // With fast-math, whose sines are off by about 1e-3 absolute, too
+        // much to divide by a small sin(phi), the extrapolating evaluation
+        // serves every alpha.
+        if cfg!(feature = "fast-math") || !(0.0..=1.0).contains(&alpha) {
+            return self.slerp_extrapolated(u, n2, n, beta, phi, alpha);
+        }
+        self.slerp_in_plane(other, n2, phi, alpha)
+    }
+
+    /// Slerp for `alpha` in [0, 1]: `(sin((1 - alpha) phi) self +
+    /// sin(alpha phi) other) / sin(phi)`, in the plane of `self` and
+    /// `other` (already on the short side), with `n2 = |self|^2` and the
+    /// notes' `phi` in (0, pi/2].
+    #[inline(always)]
+    fn slerp_in_plane(self, other: Self, n2: f32, phi: f32, alpha: f32) -> Self {
+        // alpha phi and (1 - alpha) phi add up to phi exactly where f32
+        // allows (Sterbenz), so that the result stays on the arc.
+        let far = alpha * phi;
+        let near = phi - far;
+        let (c0, c1) = if phi > SMALL_ANGLE {
+            // near, far and phi lie in [0, pi/2]. The rounding error of
+            // 1 / sin(phi) is common to both coefficients: it changes the
+            // norm, not the rotation.
+            let (s0, s1, sin_phi) = float::sin3(near, far, phi);
+            let r = 1.0 / sin_phi;
+            (s0 * r, s1 * r)
+        } else {
+            // sin(x) / sin(phi) is x / phi within 2^-26 here.
+            (near / phi, far / phi)
+        };
+        // For inputs off unit norm, other / |other| * |self| is the endpoint
+        // on self's sphere. Within rounding of unit norm the factor is taken
+        // as 1: computed, it would be off by as much as it corrects.
+        let on2 = other.norm_squared();
+        let c1 = if (n2 - on2).abs() > NEARLY_UNIT * on2 {
+            c1 * float::sqrt(n2 / on2)
+        } else {
+            c1
+        };
+        self.weighted_sum(c0, other, c1)
+    }
+
+    /// Slerp as a turn by `alpha phi` from `self` (any finite `alpha`): the
+    /// point at that angle on the circle through `self` in the direction of
+    /// `u` (the part of `other` orthogonal to `self`, `beta` long in its
+    /// scaled units), made orthogonal to `self` once more (its rounding
+    /// leaves a component along `self` of an ulp over `|u|`, a lot when
+    /// `self` and `other` are nearly the same), then normalized. `n2` and
+    /// `n` are `|self|^2` and `|self|`.
+    #[inline(always)]
+    fn slerp_extrapolated(
+        self,
+        u: ScaledSquares,
+        n2: f32,
+        n: f32,
+        beta: f32,
+        phi: f32,
+        alpha: f32,
+    ) -> Self {
+        let dir = Self::from_array(u.v);
+        let dir = dir.weighted_sum(1.0, self, -dir.dot(self) / n2);
+        // When the inputs are one rotation to within ulps, u is mostly
+        // rounding along self, and what the projection leaves is rounding
+        // too: it may vanish, or be no more orthogonal to self than u was.
+        // There is then no direction to turn in, and no turn worth the
+        // name. Within a few ulps of orthogonal, the norm of the result is
+        // off by no more than that.
+        let m = float::sqrt(dir.norm_squared());
+        // Written to be true for a NaN m too. The negated comparison keeps
+        // slerp within its flash budget on the Cortex-M4F, where
+        // `m.is_nan() || m < ..` is larger (`cargo xtask budget`).
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        let no_direction = !(m >= MIN_ORTHOGONAL);
+        if no_direction {
+            return self;
+        }
+        let dir = dir.map(|c| c / m);
+        if dir.dot(self).abs() > ORTHOGONAL_TO_ULPS * n {
+            return self;
+        }
+        // The angle of the part of u orthogonal to self, the part the turn
+        // goes along, rather than of all of u, whose rounding alpha would
+        // blow up into a turn. Where the two differ, the angle is tiny and
+        // atan2 linear: the ratio of the lengths scales it.
+        let phi = if phi < SMALL_ANGLE {
+            phi * (m / beta)
+        } else {
+            phi
+        };
+        // |alpha| <= 2^125 and phi <= pi/2 keep alpha * phi finite.
+        // Beyond, an ulp of alpha phi is far more than a turn (any angle is
+        // as right as any other), so |alpha| is clamped, on its bits: one
+        // comparison of integers, smaller on the Cortex-M4F than the two of
+        // floats that `clamp` makes.
+        let sign = alpha.to_bits() & float::SIGN;
+        let magnitude = (alpha.to_bits() & !float::SIGN).min(ALPHA_LIMIT_BITS);
+        let alpha = f32::from_bits(magnitude | sign);
+        let (s, c) = float::sin_cos(alpha * phi);
+        self.weighted_sum(c, dir, s * n)
+    }
+
+    /// Normalized linear interpolation: aligns the sign of `other` with
+    /// `self` (negating it if `self.dot(other) < 0`, so it goes the short
+    /// way), lerps the four components as `(1 - alpha) self + alpha other`,
+    /// and normalizes (the notes' "4D lerp and renormalization" hack).
+    ///
+    /// Cheaper than [`slerp`](Self::slerp), with the same path but not
+    /// constant angular velocity (it is faster in the middle). For `alpha`
+    /// in [0, 1] the result is written on the side of `self`
+    /// (`result.dot(self) >= 0`).
+    ///
+    /// # Preconditions
+    ///
+    /// `self` and `other` are unit quaternions. The lerp can only vanish
+    /// when they are not (or for extreme extrapolation of non-unit inputs);
+    /// then, as for NaN or infinite input, the result is [`Quat::NAN`].
+    ///
+    /// # Accuracy
+    ///
+    /// Norm within [`accuracy::NORMALIZE_MAX_NORM_ERROR`](crate::accuracy::NORMALIZE_MAX_NORM_ERROR) of 1.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let a = Quat::from_rotation_y(0.2);
+    /// let b = Quat::from_rotation_y(0.6);
+    /// assert!(a.nlerp(b, 0.5).angle_to(Quat::from_rotation_y(0.4)) < 1e-6);
+    /// assert!(a.nlerp(-b, 0.5).angle_to(Quat::from_rotation_y(0.4)) < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn nlerp(self, other: Self, alpha: f32) -> Self {
+        let other = if self.dot(other) < 0.0 { -other } else { other };
+        self.weighted_sum(1.0 - alpha, other, alpha).normalize()
+    }
+
+    /// `a self + b other`, component-wise.
+    #[inline]
+    fn weighted_sum(self, a: f32, other: Self, b: f32) -> Self {
+        Self::new(
+            a * self.w + b * other.w,
+            a * self.x + b * other.x,
+            a * self.y + b * other.y,
+            a * self.z + b * other.z,
+        )
+    }
+
+    /// N-way weighted blend: the normalized sum of `weight * q` over the
+    /// entries, each `q` first sign-aligned to the first entry's (negated if
+    /// its dot product with it is negative). No allocation; the slice may be
+    /// of any length. This is the notes' "4D lerp and renormalization",
+    /// useful for n-way blends; for two entries with weights `1 - t` and `t`
+    /// it equals [`nlerp`](Self::nlerp).
+    ///
+    /// The result is written on the side of the first entry (`dot >= 0`
+    /// with it) when the weights are positive. Weights need not sum to one
+    /// (the result is normalized). Mind that
+    /// sign alignment to the first entry is only a good choice when all
+    /// rotations lie within a quarter turn (pi/2) of it.
+    ///
+    /// # Preconditions
+    ///
+    /// Unit quaternions and finite weights. An empty slice, or weights that
+    /// cancel to an exactly zero sum, give [`Quat::IDENTITY`] (no rotation
+    /// information). A NaN or infinite quaternion or weight gives
+    /// [`Quat::NAN`].
+    ///
+    /// # Accuracy
+    ///
+    /// Norm within [`accuracy::NORMALIZE_MAX_NORM_ERROR`](crate::accuracy::NORMALIZE_MAX_NORM_ERROR) of 1.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let a = Quat::from_rotation_z(0.3);
+    /// let b = Quat::from_rotation_z(0.9);
+    /// let blended = Quat::blend(&[(a, 1.0), (-b, 1.0)]); // -b is b
+    /// assert!(blended.angle_to(Quat::from_rotation_z(0.6)) < 1e-6);
+    /// assert_eq!(Quat::blend(&[]), Quat::IDENTITY);
+    /// ```
+    #[must_use]
+    pub fn blend(entries: &[(Quat, f32)]) -> Self {
+        let first = entries.first().map_or(Self::IDENTITY, |&(q, _)| q);
+        let mut sum = Self::new(0.0, 0.0, 0.0, 0.0);
+        for &(q, weight) in entries {
+            let weight = if q.dot(first) < 0.0 { -weight } else { weight };
+            sum = sum.weighted_sum(1.0, q, weight);
+        }
+        // An empty slice, or weights that cancel: no rotation information.
+        if sum == Self::new(0.0, 0.0, 0.0, 0.0) {
+            return Self::IDENTITY;
+        }
+        sum.normalize()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn blend_and_nlerp_answer_on_the_side_of_their_first_input() {
+        let a = Quat::from_rotation_x(0.4);
+        let b = -Quat::from_rotation_y(0.9); // w < 0, the far side of a
+        assert!(Quat::blend(&[(a, 1.0), (b, 1.0)]).dot(a) > 0.0);
+        assert!(Quat::blend(&[(b, 1.0), (a, 3.0)]).dot(b) > 0.0);
+        assert!(a.nlerp(b, 0.9).dot(a) > 0.0);
+        assert!(b.nlerp(a, 0.9).dot(b) > 0.0);
+    }
+
+    #[test]
+    fn blend_of_cancelling_weights_is_identity_and_nan_stays_nan() {
+        let q = Quat::from_rotation_x(0.3);
+        assert_eq!(Quat::blend(&[(q, 1.0), (q, -1.0)]), Quat::IDENTITY);
+        assert!(!Quat::blend(&[(q, 1.0), (q, f32::NAN)]).w.is_finite());
+        assert!(!Quat::blend(&[(q, f32::INFINITY)]).w.is_finite());
+    }
+}
