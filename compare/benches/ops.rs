@@ -229,9 +229,9 @@ fn quat_ops(c: &mut Criterion) {
     }
 }
 
-/// The operations, in the order they are run and tabulated
-/// (`tools/perf-report.sh` lists the same names for its rows: keep the two
-/// alike).
+/// The operations, in the order they are run and tabulated (`cargo xtask
+/// perf-report` takes the README table's rows in the order `--list` prints
+/// them).
 const OPS: [&str; 16] = [
     "q*q",
     "q*q renormalized",

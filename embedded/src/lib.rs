@@ -1,10 +1,12 @@
 //! Support for running `rigtform`'s laws on an emulated Cortex-M: a tally
 //! of named checks printed over semihosting, ending in the line
-//! `N passed, M failed`, and the exit status QEMU hands back to the shell.
+//! `N passed, M failed`, and the exit status QEMU hands back to the shell;
+//! and the marker protocol of the instruction counts ([`measure`]).
 
 #![no_std]
 
 pub mod attitude;
+pub mod measure;
 #[cfg(feature = "peers")]
 pub mod ops;
 

@@ -202,41 +202,68 @@ pub fn micromath_normalize(x: &Input, o: &mut Output) {
     put(o, &mm_quat(x.a).normalize().to_array());
 }
 
-/// Every operation: (operation, library, function). `bin/size.rs` names
-/// the functions; `bin/bench.rs` walks this table in order, and the trace
-/// parser reads the names from what the bench prints.
-pub const OPS: &[(&str, &str, Op)] = &[
-    ("q * q", "rigtform", rigtform_mul),
-    ("q * q", "glam", glam_mul),
-    ("q * q", "nalgebra", nalgebra_mul),
-    ("q * q", "micromath", micromath_mul),
-    ("rotate Cvec3", "rigtform", rigtform_rotate),
-    ("rotate Cvec3", "glam", glam_rotate),
-    ("rotate Cvec3", "nalgebra", nalgebra_rotate),
-    ("rotate Cvec3", "micromath", micromath_rotate),
-    ("normalize", "rigtform", rigtform_normalize),
-    ("normalize", "glam", glam_normalize),
-    ("normalize", "nalgebra", nalgebra_normalize),
-    ("normalize", "micromath", micromath_normalize),
-    ("pow", "rigtform", rigtform_pow),
-    ("pow", "nalgebra", nalgebra_pow),
-    ("slerp", "rigtform", rigtform_slerp),
-    ("slerp", "glam", glam_slerp),
-    ("slerp", "nalgebra", nalgebra_slerp),
-    ("nlerp", "rigtform", rigtform_nlerp),
-    ("nlerp", "glam", glam_nlerp),
-    ("nlerp", "nalgebra", nalgebra_nlerp),
-    ("q * q renormalized", "rigtform", rigtform_mul_renormalized),
-    ("RigTForm * RigTForm", "rigtform", rigtform_rig_mul),
-    ("RigTForm * RigTForm", "nalgebra", nalgebra_rig_mul),
-    ("RigTForm inv", "rigtform", rigtform_rig_inv),
-    ("RigTForm inv", "nalgebra", nalgebra_rig_inv),
-    ("RigTForm * point", "rigtform", rigtform_rig_apply),
-    ("RigTForm * point", "nalgebra", nalgebra_rig_apply),
-    ("RigTForm interpolate", "rigtform", rigtform_interpolate),
-    ("RigTForm interpolate", "glam", glam_interpolate),
-    ("RigTForm interpolate", "nalgebra", nalgebra_interpolate),
-    ("Matrix4 from RigTForm", "rigtform", rigtform_matrix),
-    ("Matrix4 from RigTForm", "glam", glam_matrix),
-    ("Matrix4 from RigTForm", "nalgebra", nalgebra_matrix),
+/// One operation of one library: the table's names for it, and the
+/// function of this module that runs it.
+pub struct Entry {
+    /// The operation, as the README's table names it.
+    pub operation: &'static str,
+    /// The library.
+    pub library: &'static str,
+    /// The name of the function (what `RIGTFORM_SIZE_OP` names for
+    /// `bin/size.rs`).
+    pub function: &'static str,
+    /// The function.
+    pub op: Op,
+}
+
+/// An [`Entry`] of `function`, its name spelled once.
+macro_rules! entry {
+    ($operation:literal, $library:literal, $function:ident) => {
+        Entry {
+            operation: $operation,
+            library: $library,
+            function: stringify!($function),
+            op: $function,
+        }
+    };
+}
+
+/// Every operation. `bin/bench.rs` walks this table in order and announces
+/// each entry (`operation|library|function`); `cargo xtask` takes the rows
+/// of its table, and the functions it builds `bin/size.rs` with, from
+/// that announcement.
+pub const OPS: &[Entry] = &[
+    entry!("q * q", "rigtform", rigtform_mul),
+    entry!("q * q", "glam", glam_mul),
+    entry!("q * q", "nalgebra", nalgebra_mul),
+    entry!("q * q", "micromath", micromath_mul),
+    entry!("rotate Cvec3", "rigtform", rigtform_rotate),
+    entry!("rotate Cvec3", "glam", glam_rotate),
+    entry!("rotate Cvec3", "nalgebra", nalgebra_rotate),
+    entry!("rotate Cvec3", "micromath", micromath_rotate),
+    entry!("normalize", "rigtform", rigtform_normalize),
+    entry!("normalize", "glam", glam_normalize),
+    entry!("normalize", "nalgebra", nalgebra_normalize),
+    entry!("normalize", "micromath", micromath_normalize),
+    entry!("pow", "rigtform", rigtform_pow),
+    entry!("pow", "nalgebra", nalgebra_pow),
+    entry!("slerp", "rigtform", rigtform_slerp),
+    entry!("slerp", "glam", glam_slerp),
+    entry!("slerp", "nalgebra", nalgebra_slerp),
+    entry!("nlerp", "rigtform", rigtform_nlerp),
+    entry!("nlerp", "glam", glam_nlerp),
+    entry!("nlerp", "nalgebra", nalgebra_nlerp),
+    entry!("q * q renormalized", "rigtform", rigtform_mul_renormalized),
+    entry!("RigTForm * RigTForm", "rigtform", rigtform_rig_mul),
+    entry!("RigTForm * RigTForm", "nalgebra", nalgebra_rig_mul),
+    entry!("RigTForm inv", "rigtform", rigtform_rig_inv),
+    entry!("RigTForm inv", "nalgebra", nalgebra_rig_inv),
+    entry!("RigTForm * point", "rigtform", rigtform_rig_apply),
+    entry!("RigTForm * point", "nalgebra", nalgebra_rig_apply),
+    entry!("RigTForm interpolate", "rigtform", rigtform_interpolate),
+    entry!("RigTForm interpolate", "glam", glam_interpolate),
+    entry!("RigTForm interpolate", "nalgebra", nalgebra_interpolate),
+    entry!("Matrix4 from RigTForm", "rigtform", rigtform_matrix),
+    entry!("Matrix4 from RigTForm", "glam", glam_matrix),
+    entry!("Matrix4 from RigTForm", "nalgebra", nalgebra_matrix),
 ];

@@ -71,8 +71,8 @@ const MAG_REFERENCE_TAU: f32 = 60.0;
 /// operations; the magnetometer adds two products, a rotation, an atan2, a
 /// sine-cosine and two `exp_m1`. Executed instructions per update
 /// on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s", LTO, counted
-/// by `embedded/cost.sh`, by hand: CI does not check them): 1,348 (6D) and
-/// 1,887 (9D) with the default kernels, 1,350 and 1,852 with `fast-math`.
+/// by `cargo xtask filter-cost`, by hand: CI does not check them): 1,351 (6D)
+/// and 1,891 (9D) with the default kernels, 1,353 and 1,856 with `fast-math`.
 ///
 /// # Bad input
 ///

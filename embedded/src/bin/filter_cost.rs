@@ -1,49 +1,34 @@
 //! Executed instructions per call of the attitude updates on the emulated
-//! Cortex-M4F, by the method of the performance issue: each call sits
-//! between two never-inlined marker functions, QEMU traces every executed
-//! instruction (`-singlestep -d exec,nochain`), and `cost.sh` counts the
-//! trace lines between the markers, minus those of an empty bracket.
-//! Run: `./cost.sh` in `embedded/`.
+//! Cortex-M4F: each call sits between the markers of
+//! [`rigtform_embedded::measure`], after an empty bracket (the
+//! calibration), once each, past the filters' warm-up. Run it with
+//! `cargo xtask filter-cost` (`--features fast-math` for micromath's
+//! kernels), not directly.
 
 #![no_std]
 #![no_main]
 
 use core::hint::black_box;
-use core::sync::atomic::{AtomicU32, Ordering};
 
 use cortex_m_rt::entry;
-use cortex_m_semihosting::{debug, hprintln};
+use cortex_m_semihosting::debug;
 use panic_semihosting as _;
 use rigtform::attitude::{FilterParams, OrientationFilter, Smoother};
 use rigtform::{Cvec3, Quat};
+use rigtform_embedded::measure;
 
-/// Two statics, so that the two markers differ and are not folded into one.
-static OPENED: AtomicU32 = AtomicU32::new(0);
-static CLOSED: AtomicU32 = AtomicU32::new(0);
+/// The rows, in the order of their brackets below.
+const ROWS: [&str; 4] = [
+    "OrientationFilter::update (6D)",
+    "OrientationFilter::update_with_mag (9D)",
+    "Quat::integrate",
+    "Smoother::update",
+];
 
-/// Opens a measured bracket (called through [`open`], never inlined).
-#[no_mangle]
-#[inline(never)]
-pub extern "C" fn cost_open(id: u32) {
-    OPENED.store(id, Ordering::SeqCst);
-}
-
-/// Closes a measured bracket (called through [`close`], never inlined).
-#[no_mangle]
-#[inline(never)]
-pub extern "C" fn cost_close(id: u32) {
-    CLOSED.fetch_add(id + 1, Ordering::SeqCst);
-}
-
-/// Calls `cost_open` through an opaque pointer, so that LTO keeps it a
-/// function of its own, whose address the trace shows.
-fn open(id: u32) {
-    black_box(cost_open as extern "C" fn(u32))(id);
-}
-
-/// As [`open`], for `cost_close`.
-fn close(id: u32) {
-    black_box(cost_close as extern "C" fn(u32))(id);
+/// An empty bracket: the calibration of the measured one after it.
+fn empty() {
+    measure::start();
+    measure::end();
 }
 
 /// A moving, tilted, biased sample at step `i` of 285.7 Hz.
@@ -70,36 +55,36 @@ fn main() -> ! {
     let (gyr, acc, mag) = sample(500);
     let q = Quat::from_rotation_y(0.4);
 
-    open(0);
-    close(0);
+    for name in ROWS {
+        measure::row(1, &[name]);
+    }
 
-    open(1);
+    empty();
+    measure::start();
     black_box(black_box(&mut six).update(black_box(gyr), black_box(acc), black_box(0.0035)));
-    close(1);
+    measure::end();
 
-    open(2);
+    empty();
+    measure::start();
     black_box(black_box(&mut nine).update_with_mag(
         black_box(gyr),
         black_box(acc),
         black_box(mag),
         black_box(0.0035),
     ));
-    close(2);
+    measure::end();
 
-    open(3);
+    empty();
+    measure::start();
     black_box(black_box(q).integrate(black_box(gyr), black_box(0.0035)));
-    close(3);
+    measure::end();
 
-    open(4);
+    empty();
+    measure::start();
     black_box(black_box(&mut smoother).update(black_box(q), black_box(0.0035)));
-    close(4);
+    measure::end();
 
-    hprintln!(
-        "markers: last opened {}, closed sum {}",
-        OPENED.load(Ordering::SeqCst),
-        CLOSED.load(Ordering::SeqCst)
-    );
-    hprintln!("brackets: 0 empty, 1 OrientationFilter::update, 2 update_with_mag, 3 Quat::integrate, 4 Smoother::update");
+    measure::done(ROWS.len());
     debug::exit(debug::EXIT_SUCCESS);
     loop {
         cortex_m::asm::wfi();

@@ -2,7 +2,8 @@
 //! named by `RIGTFORM_SIZE_OP` when it is built: its flash size, less that
 //! of the same firmware calling `ops::empty`, is what the operation costs
 //! in flash with everything it pulls in (kernels, libm, soft-float and
-//! compiler helpers). `bench.sh` builds it once per operation.
+//! compiler helpers). `cargo xtask m4f` builds it once per operation and
+//! opt-level.
 
 #![no_std]
 #![no_main]

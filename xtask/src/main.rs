@@ -1,0 +1,129 @@
+//! `cargo xtask`: rigtform's measurements (`.cargo/config.toml` aliases
+//! `cargo xtask` to `cargo run --package xtask --`).
+//!
+//! - `cargo xtask m4f [--count-only]`: the Cortex-M4F table. Instructions
+//!   executed per call of every operation of `embedded/src/ops.rs` (rigtform
+//!   and its peers), on QEMU's `mps2-an386`, and the flash bytes one call
+//!   adds to a firmware at opt-level "s" and 3 (`embedded/src/bin/size.rs`
+//!   built once per operation and opt-level, `llvm-size` text + data, less
+//!   the same firmware calling `ops::empty`; LTO, one codegen unit).
+//!   `--count-only` skips the flash builds (a minute instead of several).
+//! - `cargo xtask budget`: the counts, then slerp's flash at opt-level "s";
+//!   fails unless rigtform's slerp takes at most 400 instructions per call
+//!   and 2048 bytes. CI runs it.
+//! - `cargo xtask filter-cost [--features fast-math]`: instructions per
+//!   call of the attitude updates (`embedded/src/bin/filter_cost.rs`).
+//! - `cargo xtask perf-report [--draws N]`: the README's Performance
+//!   tables: criterion's medians on the host (`cargo bench -p
+//!   rigtform-compare --bench ops`, then rigtform's functions with
+//!   `fast-math`), the Cortex-M4F table, and the accuracy report on
+//!   1,000,000 draws per class with each backend; written between the
+//!   README's `perf-report` markers, the README replaced only when all of
+//!   it succeeded.
+//!
+//! How an instruction count is made: the firmware (`embedded/src/bin/`)
+//! calls the two marker functions of `embedded/src/measure.rs` around each
+//! measured call and around an empty call just before it, and announces its
+//! rows over semihosting (`measure <inputs>|<name>...`, then `measure
+//! done <rows>`). QEMU runs it with one instruction per translation block
+//! and logs each one executed (`-singlestep -d exec,nochain`); the xtask
+//! reads the markers' addresses from the ELF and counts the instructions
+//! between them ([`trace`]): per row, the mean over its inputs of the
+//! measured bracket less the empty one. The rows, and the functions the
+//! flash builds link, come from the firmware's announcement; the host
+//! table's rows and columns from the bench's own `--list`.
+//!
+//! Each subcommand adds what it needs where it can (the thumb target and
+//! rustup's `llvm-tools` with rustup, `qemu-system-arm` with apt-get when
+//! run as root) and otherwise says how. Progress goes to stderr, tables to
+//! stdout; any failure exits with status 1 and a message.
+
+mod criterion;
+mod firmware;
+mod m4f;
+mod readme;
+mod report;
+mod tools;
+mod trace;
+
+use std::process::ExitCode;
+
+use anyhow::Result;
+use clap::{Parser, Subcommand};
+
+/// The command line.
+#[derive(Parser)]
+#[command(
+    name = "cargo xtask",
+    bin_name = "cargo xtask",
+    about = "rigtform's measurements"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Cmd,
+}
+
+/// The subcommands (see the module documentation).
+#[derive(Subcommand)]
+enum Cmd {
+    /// Cortex-M4F table: instructions per call and flash bytes at opt-level
+    /// "s" and 3 of every operation, beside the peers
+    M4f {
+        /// Only the instruction counts, no flash builds
+        #[arg(long)]
+        count_only: bool,
+    },
+    /// Fails unless slerp keeps to 400 instructions per call and 2048 bytes
+    /// of flash at opt-level "s" on the Cortex-M4F
+    Budget,
+    /// Instructions per call of the attitude updates on the Cortex-M4F
+    FilterCost {
+        /// Cargo features of the firmware (`fast-math` for micromath's
+        /// kernels)
+        #[arg(long)]
+        features: Option<String>,
+    },
+    /// Regenerates the README's Performance tables (about 10 minutes)
+    PerfReport {
+        /// Draws per class of the accuracy report
+        #[arg(long, default_value_t = 1_000_000)]
+        draws: u64,
+    },
+}
+
+fn main() -> ExitCode {
+    match run(Cli::parse().command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(command: Cmd) -> Result<()> {
+    match command {
+        Cmd::M4f { count_only } => {
+            let ops = m4f::counts()?;
+            let ops = if count_only {
+                ops
+            } else {
+                m4f::with_flash(ops)?
+            };
+            print!("{}", m4f::table(&ops));
+        }
+        Cmd::Budget => m4f::budget()?,
+        Cmd::FilterCost { features } => {
+            for m in firmware::count("filter_cost", features.as_deref())? {
+                println!(
+                    "{:<42} {:>6} instructions (less an empty bracket of {})",
+                    m.fields.join(" "),
+                    m.instructions,
+                    m.empty
+                );
+            }
+        }
+        Cmd::PerfReport { draws } => report::perf_report(draws)?,
+    }
+    Ok(())
+}
