@@ -5,7 +5,7 @@
 //! - [`draws`]: seeded random draws (unit quaternions uniform over the
 //!   rotations) and the draw count `RIGTFORM_DRAWS` sets;
 //! - [`strategies`]: the same distributions as proptest strategies;
-//! - [`reference`]: conversions to nalgebra's f64 types and the notes'
+//! - [`reference`](mod@reference): conversions to nalgebra's f64 types and the notes'
 //!   `pow` and `slerp` in f64, to measure errors against;
 //! - [`tolerance`]: the documented error bounds of `pow` and `slerp` for a
 //!   given turn, and entry-wise matrix differences;
