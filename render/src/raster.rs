@@ -249,9 +249,23 @@ impl Triangle {
     #[must_use]
     #[inline]
     pub fn depth(&self, e: &[i64; 3]) -> f32 {
+        self.depth_plane().at(e)
+    }
+
+    /// The depth plane of the triangle, to evaluate at many samples:
+    /// [`DepthPlane::at`] is [`depth`](Self::depth), with what it reads
+    /// of the triangle in a small value of its own (which the compiler
+    /// keeps in registers across a loop over pixels).
+    #[must_use]
+    #[inline]
+    pub fn depth_plane(&self) -> DepthPlane {
         let [z0, z1, z2] = self.z;
-        let (l1, l2) = (e[1] as f32 * self.inv_area, e[2] as f32 * self.inv_area);
-        z0 + (z1 - z0) * l1 + (z2 - z0) * l2
+        DepthPlane {
+            z0,
+            dz1: z1 - z0,
+            dz2: z2 - z0,
+            inv_area: self.inv_area,
+        }
     }
 
     /// Barycentric weights (times twice the area) of the shading point of
@@ -297,6 +311,27 @@ impl Triangle {
                     * w;
         }
         out
+    }
+}
+
+/// The depth of a triangle as a function of the edge values of a sample
+/// (see [`Triangle::depth_plane`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DepthPlane {
+    z0: f32,
+    dz1: f32,
+    dz2: f32,
+    inv_area: f32,
+}
+
+impl DepthPlane {
+    /// The NDC depth at a sample from its edge values `e`: depth
+    /// interpolates linearly on screen.
+    #[must_use]
+    #[inline]
+    pub fn at(&self, e: &[i64; 3]) -> f32 {
+        let (l1, l2) = (e[1] as f32 * self.inv_area, e[2] as f32 * self.inv_area);
+        self.z0 + self.dz1 * l1 + self.dz2 * l2
     }
 }
 
