@@ -185,7 +185,7 @@ mod tests {
         kernel_sweep(997);
     }
 
-    /// Every f32 of each range, about 4.3 billion evaluations:
+    /// Every f32 of each range:
     /// `cargo test --release --lib -- --ignored exhaustive_kernel_sweep`
     /// (a few minutes).
     #[test]
