@@ -106,6 +106,23 @@ mod tests {
         assert!(!rest.is_resting(&p));
     }
 
+    /// Accelerometer noise well inside `rest_acc` of gravity (here 0.2 m/s²
+    /// against 0.05 g) is still rest; the same gyro with a jolt of twice
+    /// that fraction is not.
+    #[test]
+    fn accelerometer_noise_within_rest_acc_is_rest() {
+        let p = FilterParams::DEFAULT;
+        let mut rest = RestDetector::new();
+        for i in 0..1000 {
+            let noise = if i % 2 == 0 { 0.2 } else { -0.2 };
+            rest.update(Cvec3::ZERO, gravity() + Cvec3::new(noise, 0.0, 0.0), DT, &p);
+        }
+        assert!(rest.is_resting(&p));
+        let jolt = Cvec3::new(2.0 * p.rest_acc * p.gravity, 0.0, 0.0);
+        rest.update(Cvec3::ZERO, gravity() + jolt, DT, &p);
+        assert!(!rest.is_resting(&p));
+    }
+
     #[test]
     fn a_jolt_restarts_the_clock() {
         let p = FilterParams::DEFAULT;
