@@ -77,7 +77,7 @@ pub use fragment::fill_triangle;
 pub use framebuffer::{linear_to_srgb8, Band, Framebuffer};
 pub use image::Image;
 pub use mesh::Mesh;
-pub use raster::{Cull, Triangle, MAX_COORDINATE};
+pub use raster::{Cull, DepthPlane, Triangle, MAX_COORDINATE};
 pub use samples::Msaa;
 pub use scene::{Camera, Draw, Scene, Settings, Stats};
 pub use shade::Lighting;

@@ -235,27 +235,19 @@ impl Triangle {
         }
     }
 
-    /// The NDC depth at a sample from its edge values `e` (as
-    /// [`for_each_covered`](Self::for_each_covered) hands them over): depth
-    /// interpolates linearly on screen.
+    /// The depth plane of the triangle, to evaluate at every covered
+    /// sample with [`DepthPlane::at`]: what it reads of the triangle, in a
+    /// small value of its own (which the compiler keeps in registers across
+    /// a loop over pixels).
     ///
     /// ```
     /// use rigtform_render::{Cull, Msaa, ScreenVertex, Triangle};
     /// let v = |x, y, z| ScreenVertex { x, y, z, inv_w: 1.0, attrs_w: [0.0; 9] };
     /// let t = Triangle::setup([v(0.0, 0.0, 0.5), v(0.0, 4.0, 0.5), v(4.0, 0.0, 0.5)], Cull::Back, 8, 8)
     ///     .unwrap();
-    /// t.for_each_covered(Msaa::Off, 0, 7, |_, _, _, e| assert_eq!(t.depth(&e[0]), 0.5));
+    /// let depth = t.depth_plane();
+    /// t.for_each_covered(Msaa::Off, 0, 7, |_, _, _, e| assert_eq!(depth.at(&e[0]), 0.5));
     /// ```
-    #[must_use]
-    #[inline]
-    pub fn depth(&self, e: &[i64; 3]) -> f32 {
-        self.depth_plane().at(e)
-    }
-
-    /// The depth plane of the triangle, to evaluate at many samples:
-    /// [`DepthPlane::at`] is [`depth`](Self::depth), with what it reads
-    /// of the triangle in a small value of its own (which the compiler
-    /// keeps in registers across a loop over pixels).
     #[must_use]
     #[inline]
     pub fn depth_plane(&self) -> DepthPlane {
@@ -325,8 +317,9 @@ pub struct DepthPlane {
 }
 
 impl DepthPlane {
-    /// The NDC depth at a sample from its edge values `e`: depth
-    /// interpolates linearly on screen.
+    /// The NDC depth at a sample from its edge values `e` (as
+    /// [`Triangle::for_each_covered`] hands them over): depth interpolates
+    /// linearly on screen.
     #[must_use]
     #[inline]
     pub fn at(&self, e: &[i64; 3]) -> f32 {
