@@ -227,6 +227,13 @@ mod tests {
         let text = std::fs::read_to_string(&file).unwrap();
         std::fs::write(&file, text.replace(r#"{"Elements":1024}"#, "null")).unwrap();
         assert!(read_all(dir.path()).is_err());
+        // Zero calls per iteration would divide by zero.
+        std::fs::write(
+            &file,
+            text.replace(r#"{"Elements":1024}"#, r#"{"Elements":0}"#),
+        )
+        .unwrap();
+        assert!(read_all(dir.path()).is_err());
     }
 
     #[test]

@@ -102,8 +102,15 @@ mod tests {
         let no_begin = README.replace("<!-- perf-report:begin", "<!-- something");
         let twice = format!("{README}{README}");
         let swapped = "<!-- perf-report:end -->\n<!-- perf-report:begin x -->\n";
-        for readme in [&no_end, &no_begin, &twice, swapped, "no markers\n"] {
-            assert!(splice(readme, SECTION).is_err(), "{readme}");
+        for (readme, says) in [
+            (no_end.as_str(), "has no"),
+            (&no_begin, "has no"),
+            ("no markers\n", "has no"),
+            (&twice, "more than one"),
+            (swapped, "comes before"),
+        ] {
+            let e = splice(readme, SECTION).unwrap_err();
+            assert!(e.to_string().contains(says), "{readme}: {e}");
         }
     }
 

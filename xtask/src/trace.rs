@@ -300,6 +300,10 @@ mod tests {
         let t = trace(&[3]).replace(&line(MARKERS.start), &line(0x900));
         let e = bracket_counts(t.as_bytes(), MARKERS).unwrap_err();
         assert!(e.to_string().contains("with no measure_start"), "{e:#}");
+        // The error names the line of the trace, counted from 1: here the
+        // end marker's, after two header lines, one of main, the start
+        // replaced, its body and three of work.
+        assert!(e.to_string().starts_with("trace line 9:"), "{e:#}");
         // Neither marker: no bracket at all, not a count of zero.
         let t = line(0x200) + &line(0x202);
         let e = bracket_counts(t.as_bytes(), MARKERS).unwrap_err();
