@@ -83,7 +83,7 @@
 #![cfg_attr(docsrs, feature(doc_cfg))]
 #![deny(missing_docs)]
 // No unsafe code, except the one `vsqrt.f32` instruction of
-// `float::fpu_sqrt` on Arm hard-float targets, where the lint is `deny` and
+// `fpu_sqrt` (src/float/sqrt.rs) on Arm hard-float targets, where the lint is `deny` and
 // that one function allows it.
 #![cfg_attr(
     not(all(target_arch = "arm", target_abi = "eabihf")),

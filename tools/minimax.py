@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Minimax coefficients of the polynomial kernels in src/float.rs.
+"""Minimax coefficients of the polynomial kernels in src/float/ (atan2.rs, sin_cos.rs).
 
     pip install mpmath
     python3 tools/minimax.py atan|sin|cos|constants

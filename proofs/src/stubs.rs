@@ -1,4 +1,4 @@
-//! Kani stubs: the crate's float kernels (`src/float.rs`, re-exported
+//! Kani stubs: the crate's float kernels (behind `src/float.rs`, re-exported
 //! under Kani as `rigtform::kani_kernels`) replaced by "any value that
 //! meets the contract" (`src/contracts.rs`), a sound over-approximation as
 //! long as the kernels meet the contracts, which
