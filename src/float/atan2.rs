@@ -83,7 +83,7 @@ pub(crate) fn atan2_kernel(y: f32, x: f32) -> f32 {
 mod tests {
     use super::*;
     use crate::accuracy::{ATAN2_MAX_ULP, ATAN_POLY_MAX_ULP};
-    use crate::float::sweep::{floats, ulps, Worst};
+    use crate::float::sweep::{floats, ulps, Worst, SAMPLE_STEP};
 
     /// The largest ulp errors of `atan_poly` and `atan2_kernel` over every
     /// `step`-th f32 of their ranges.
@@ -105,11 +105,11 @@ mod tests {
         atan2.check();
     }
 
-    /// Every 997th f32 of the ranges: the sampled variant of
+    /// Every [`SAMPLE_STEP`]-th f32 of the ranges: the sampled variant of
     /// `exhaustive_kernel_sweep` that every test run does.
     #[test]
     fn kernel_is_within_its_ulp_bounds_on_a_sample() {
-        kernel_sweep(997);
+        kernel_sweep(SAMPLE_STEP);
     }
 
     /// Every f32 of the ranges:

@@ -14,6 +14,12 @@ pub(super) fn spread(lo: f64, hi: f64, n: usize) -> impl Iterator<Item = f32> {
     (0..=n).map(move |i| (lo + (hi - lo) * i as f64 / n as f64) as f32)
 }
 
+/// The step of the kernel sweeps every test run does: every 997th f32 of
+/// a range (about a million arguments per range). The exhaustive sweeps,
+/// run by hand, take every f32 (step 1).
+#[cfg(not(feature = "fast-math"))]
+pub(super) const SAMPLE_STEP: usize = 997;
+
 /// Every `step`-th f32 from `lo` to `hi` (both included, both >= 0).
 #[cfg(not(feature = "fast-math"))]
 pub(super) fn floats(lo: f32, hi: f32, step: usize) -> impl Iterator<Item = f32> {
