@@ -65,9 +65,14 @@ pub fn inputs(ops: &[Op]) -> Result<u32> {
 }
 
 /// The flash bytes that linking `function` adds to the size firmware at
-/// `opt_level`, less the same firmware linking `ops::empty`.
-fn flash_of(llvm_tools: &std::path::Path, opt_level: &str, function: &str) -> Result<u64> {
-    let base = firmware::flash(llvm_tools, opt_level, EMPTY_OP)?;
+/// `opt_level`: its size less `base`, the same firmware linking
+/// `ops::empty` at that opt-level.
+fn added_flash(
+    llvm_tools: &std::path::Path,
+    opt_level: &str,
+    base: u64,
+    function: &str,
+) -> Result<u64> {
     let bytes = firmware::flash(llvm_tools, opt_level, function)?;
     bytes
         .checked_sub(base)
@@ -89,13 +94,7 @@ pub fn with_flash(mut ops: Vec<Op>) -> Result<Vec<Op>> {
                 op.function,
                 op.operation
             ));
-            let bytes = firmware::flash(&llvm_tools, opt_level, &op.function)?;
-            flash[i][level] = bytes.checked_sub(base).with_context(|| {
-                format!(
-                    "{} is smaller ({bytes}) than {EMPTY_OP} ({base})",
-                    op.function
-                )
-            })?;
+            flash[i][level] = added_flash(&llvm_tools, opt_level, base, &op.function)?;
         }
     }
     for (op, f) in ops.iter_mut().zip(flash) {
@@ -138,7 +137,8 @@ pub fn budget() -> Result<()> {
         .context("the bench announced no slerp of rigtform")?;
     let llvm_tools = tools::llvm_tools()?;
     say(format!("flash of {} at opt-level \"s\"", slerp.function));
-    let bytes = flash_of(&llvm_tools, "s", &slerp.function)?;
+    let base = firmware::flash(&llvm_tools, "s", EMPTY_OP)?;
+    let bytes = added_flash(&llvm_tools, "s", base, &slerp.function)?;
     println!("{}", budget_line(slerp.instructions, bytes));
     ensure!(
         slerp.instructions <= SLERP_INSTRUCTIONS && bytes <= SLERP_FLASH,
