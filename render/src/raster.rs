@@ -236,9 +236,10 @@ impl Triangle {
     }
 
     /// The depth plane of the triangle, to evaluate at every covered
-    /// sample with [`DepthPlane::at`]: what it reads of the triangle, in a
-    /// small value of its own (which the compiler keeps in registers across
-    /// a loop over pixels).
+    /// sample with [`DepthPlane::at`]: what the depth reads of the
+    /// triangle, taken once into a small value of its own rather than read
+    /// through the triangle at every sample (the fragment stage measured
+    /// faster so, see `fill_triangle`).
     ///
     /// ```
     /// use rigtform_render::{Cull, Msaa, ScreenVertex, Triangle};
