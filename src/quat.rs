@@ -191,8 +191,8 @@ impl Quat {
         Self::new(w, x, y, z)
     }
 
-    /// `f` of each component: the one place components are scaled one by
-    /// one.
+    /// `f` of each component: the one place a `Quat`'s components are
+    /// scaled one by one.
     #[inline(always)]
     fn map(self, f: impl Fn(f32) -> f32) -> Self {
         Self::new(f(self.w), f(self.x), f(self.y), f(self.z))
