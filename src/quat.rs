@@ -4,14 +4,16 @@
 //!
 //! One file per further concept: `quat/power.rs` (the notes' "Power": the
 //! polar form and `pow`), `quat/interpolate.rs` ("to interpolate": `slerp`,
-//! `nlerp`, `blend`) and `quat/exp_log.rs` (the exponential and logarithm
-//! maps, and gyro integration built on them).
+//! `nlerp`, `blend`), `quat/exp_log.rs` (the exponential and logarithm
+//! maps, and gyro integration built on them) and `quat/catmull_rom.rs`
+//! (splines through many keyframes).
 
 use core::ops::{Mul, Neg};
 
 use crate::float::{self, scale_for_squares};
 use crate::vec::{Cvec3, Cvec4};
 
+pub(crate) mod catmull_rom;
 mod exp_log;
 mod interpolate;
 mod power;

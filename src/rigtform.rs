@@ -1,11 +1,14 @@
 //! [`RigTForm`]: a rigid body transform kept as a translation and a rotation
 //! quaternion, as in the notes' "Rbt data structure", "rbt * rbt", "inv
-//! operator" and "rbt Interpolation".
+//! operator" and "rbt Interpolation"; `rigtform/catmull_rom.rs` holds the
+//! spline through many keyframes.
 
 use core::ops::Mul;
 
 use crate::quat::Quat;
 use crate::vec::{Cvec3, Cvec4};
+
+mod catmull_rom;
 
 /// A rigid body transform `A = T R`: first rotate by `r`, then translate by
 /// `t`. As a matrix, `[[r, t], [0, 1]]`.
