@@ -99,3 +99,46 @@ pub fn catmull_rom_translation64(keys: &[na::Vector3<f64>], t: f64) -> na::Vecto
     let v = 1.0 - u;
     from * (v * v * v) + p1 * (3.0 * v * v * u) + p2 * (3.0 * v * u * u) + to * (u * u * u)
 }
+
+/// Step of [`one_sided_angular_velocity`]: 1/256, exact in f32 beside
+/// whole numbers, small enough for its second-order difference (error about
+/// `h^2` times the path's third derivative), large enough that f32
+/// rounding of the rotations (a few 1e-7 rad) divided by it stays near
+/// 1e-4 rad per unit of `t`.
+pub const VELOCITY_STEP: f32 = 1.0 / 256.0;
+
+/// The angular velocity, in radians per unit of `t` in the world frame, of
+/// the rotation path `path` as it leaves `path(s)` in the direction `dir`
+/// (+1 after `s`, -1 before it), by a one-sided second-order difference:
+/// with `L(x) = log(path(s + dir x) path(s)^-1)` (the short way, in f64),
+/// `dir (4 L(h) - L(2 h)) / (2 h)`. Where a path's angular velocity jumps,
+/// the two sides differ by the jump.
+///
+/// ```
+/// use rigtform::Quat;
+/// use rigtform_testkit::catmull_rom::one_sided_angular_velocity;
+/// let path = |s: f32| Quat::from_rotation_z(if s < 1.0 { s } else { 3.0 * s - 2.0 });
+/// let before = one_sided_angular_velocity(path, 1.0, -1.0);
+/// let after = one_sided_angular_velocity(path, 1.0, 1.0);
+/// assert!((before.z - 1.0).abs() < 1e-3 && (after.z - 3.0).abs() < 1e-3);
+/// ```
+pub fn one_sided_angular_velocity(
+    path: impl Fn(f32) -> rigtform::Quat,
+    s: f32,
+    dir: f32,
+) -> na::Vector3<f64> {
+    let at = crate::reference::to_f64(path(s)).normalize();
+    let log = |x: f32| {
+        let d = crate::reference::to_f64(path(s + dir * x)).normalize() * at.conjugate();
+        let d = if d.w < 0.0 { -d } else { d };
+        let v = d.imag();
+        let n = v.norm();
+        if n == 0.0 {
+            v
+        } else {
+            v * (2.0 * n.atan2(d.w) / n)
+        }
+    };
+    let h = VELOCITY_STEP;
+    (log(h) * 4.0 - log(2.0 * h)) * (f64::from(dir) / (2.0 * f64::from(h)))
+}
