@@ -18,7 +18,7 @@ pub enum Method {
     /// moves on a straight line, so the object shears and shrinks.
     MatrixLerp,
     /// Translation lerped, rotation factored into Euler angles
-    /// ([`Euler`]) and each angle lerped: an unnatural path that depends on
+    /// ([`lerp_euler_angles`]) and each angle lerped: an unnatural path that depends on
     /// the world frame.
     EulerLerp,
     /// [`RigTForm::interpolate`]: the origin on a straight line at constant
