@@ -265,6 +265,17 @@ mod tests {
                 "RENORMALIZED_CHAIN_NORM_ERROR",
                 super::RENORMALIZED_CHAIN_NORM_ERROR,
             ),
+            ("EULER_MAX_ANGLE_ERROR", super::EULER_MAX_ANGLE_ERROR),
+            (
+                "FROM_MATRIX_MAX_ANGLE_ERROR",
+                super::FROM_MATRIX_MAX_ANGLE_ERROR,
+            ),
+            ("ROTATION_ARC_MAX_ERROR", super::ROTATION_ARC_MAX_ERROR),
+            ("LOOK_AT_MAX_ANGLE_ERROR", super::LOOK_AT_MAX_ANGLE_ERROR),
+            (
+                "DETERMINANT_MAX_REL_ERROR",
+                super::DETERMINANT_MAX_REL_ERROR,
+            ),
         ];
         let tables = [
             ("src/accuracy.rs", include_str!("accuracy.rs"), "//! | [`"),
