@@ -10,10 +10,10 @@ use crate::quat::{EulerRot, Quat};
 use crate::rigtform::RigTForm;
 use crate::vec::{Cvec3, Cvec4};
 
-/// `[a, b, ...]`, each component with `f`'s width and precision.
-fn list(f: &mut Formatter<'_>, components: &[f32]) -> fmt::Result {
+/// `[a, b, ...]`, each item with `f`'s width and precision.
+fn list<T: Display>(f: &mut Formatter<'_>, items: &[T]) -> fmt::Result {
     f.write_str("[")?;
-    for (i, c) in components.iter().enumerate() {
+    for (i, c) in items.iter().enumerate() {
         if i > 0 {
             f.write_str(", ")?;
         }
@@ -87,14 +87,7 @@ impl Display for Matrix4 {
     /// );
     /// ```
     fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
-        f.write_str("[")?;
-        for (i, c) in self.cols.iter().enumerate() {
-            if i > 0 {
-                f.write_str(", ")?;
-            }
-            Display::fmt(c, f)?;
-        }
-        f.write_str("]")
+        list(f, &self.cols)
     }
 }
 

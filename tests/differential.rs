@@ -272,15 +272,6 @@ fn inverse_of_general_matrices_is_within_its_bound() {
     worst.check(accuracy::INVERSE_MAX_REL_ERROR);
 }
 
-const EULER_ORDERS: [EulerRot; 6] = [
-    EulerRot::ZYX,
-    EulerRot::ZXY,
-    EulerRot::YXZ,
-    EulerRot::YZX,
-    EulerRot::XYZ,
-    EulerRot::XZY,
-];
-
 #[test]
 fn euler_angles_are_within_their_bound_at_gimbal_lock_too() {
     use core::f64::consts::{FRAC_PI_2, PI};
@@ -289,7 +280,7 @@ fn euler_angles_are_within_their_bound_at_gimbal_lock_too() {
     let mut norm = Worst::new("Quat::from_euler: |norm - 1|");
     let mut to = Worst::new("Quat::to_euler: angle error of the angles' rotation");
     for i in 0..draw_count() {
-        let order = EULER_ORDERS[i % 6];
+        let order = EulerRot::ALL[i % 6];
         let a = draws.uniform(-PI, PI) as f32;
         let c = draws.uniform(-PI, PI) as f32;
         // One draw in four at or within a hair of gimbal lock.

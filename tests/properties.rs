@@ -429,14 +429,7 @@ proptest! {
 
 /// Every Euler order.
 fn euler_order() -> impl Strategy<Value = EulerRot> {
-    prop::sample::select(vec![
-        EulerRot::ZYX,
-        EulerRot::ZXY,
-        EulerRot::YXZ,
-        EulerRot::YZX,
-        EulerRot::XYZ,
-        EulerRot::XZY,
-    ])
+    prop::sample::select(EulerRot::ALL.to_vec())
 }
 
 proptest! {

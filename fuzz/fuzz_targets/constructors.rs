@@ -19,22 +19,13 @@ struct Input {
     matrix: [f32; 16],
 }
 
-const ORDERS: [EulerRot; 6] = [
-    EulerRot::ZYX,
-    EulerRot::ZXY,
-    EulerRot::YXZ,
-    EulerRot::YZX,
-    EulerRot::XYZ,
-    EulerRot::XZY,
-];
-
 /// Squared lengths in [2^-40, 2^80]: the arc law's precondition.
 fn moderate(v: Cvec3) -> bool {
     v.is_finite() && (9.094947e-13..=1.2089258e24).contains(&v.norm_squared())
 }
 
 fuzz_target!(|input: Input| {
-    let order = ORDERS[usize::from(input.order) % ORDERS.len()];
+    let order = EulerRot::ALL[usize::from(input.order) % EulerRot::ALL.len()];
     let q = Quat::from_array(input.q);
     let [a, b, c] = input.angles;
     let (from, to, up) = (

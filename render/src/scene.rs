@@ -300,6 +300,30 @@ mod tests {
         }
     }
 
+    /// The pixels of a 101 x 101 picture that a tiny cube at `at` covers:
+    /// 0.1 wide, half a pixel where 20 units span the picture, so it covers
+    /// only the centre of the pixel its point falls in.
+    fn pixels_of_a_marker(camera: Camera, at: Cvec3) -> Vec<(u32, u32)> {
+        let marker = Mesh::cube(0.1, [1.0; 3]);
+        let scene = Scene {
+            camera,
+            lights: [Cvec3::new(0.0, 0.0, 20.0); 2],
+            intensity: [0.5, 0.5],
+            background: [0.0; 3],
+            draws: vec![Draw {
+                mesh: &marker,
+                placement: Placement::Rigid(RigTForm::from_translation(at)),
+                scale: Cvec3::new(1.0, 1.0, 1.0),
+                tint: [1.0; 3],
+            }],
+        };
+        let (fb, _) = scene.render_samples(&settings(101, 101));
+        (0..101)
+            .flat_map(|y| (0..101).map(move |x| (x, y)))
+            .filter(|&(x, y)| fb.depth(x, y, 0) < 1.0)
+            .collect()
+    }
+
     #[test]
     fn point_projects_onto_the_pixel_computed_by_hand() {
         // Eye at (0, 0, 10) looking down -z, 90 degree field of view, square
@@ -314,27 +338,10 @@ mod tests {
             near: 0.5,
             far: 50.0,
         };
-        // Half a pixel wide (20 units span 101 pixels): it covers only the
-        // centre of the pixel the point falls in.
-        let marker = Mesh::cube(0.1, [1.0; 3]);
-        let scene = Scene {
-            camera,
-            lights: [Cvec3::new(0.0, 0.0, 20.0); 2],
-            intensity: [0.5, 0.5],
-            background: [0.0; 3],
-            draws: vec![Draw {
-                mesh: &marker,
-                placement: Placement::Rigid(RigTForm::from_translation(Cvec3::new(2.0, 1.0, 0.0))),
-                scale: Cvec3::new(1.0, 1.0, 1.0),
-                tint: [1.0; 3],
-            }],
-        };
-        let (fb, _) = scene.render_samples(&settings(101, 101));
-        let drawn: Vec<(u32, u32)> = (0..101)
-            .flat_map(|y| (0..101).map(move |x| (x, y)))
-            .filter(|&(x, y)| fb.depth(x, y, 0) < 1.0)
-            .collect();
-        assert_eq!(drawn, [(60, 45)]);
+        assert_eq!(
+            pixels_of_a_marker(camera, Cvec3::new(2.0, 1.0, 0.0)),
+            [(60, 45)]
+        );
         // The same by the matrices themselves.
         let p = camera.projection(1.0)
             * Matrix4::from(camera.eye.inv())
@@ -354,27 +361,8 @@ mod tests {
             far: 50.0,
         }
         .orthographic(20.0);
-        let marker = Mesh::cube(0.1, [1.0; 3]);
         for z in [5.0, -30.0] {
-            let scene = Scene {
-                camera,
-                lights: [Cvec3::new(0.0, 0.0, 20.0); 2],
-                intensity: [0.5, 0.5],
-                background: [0.0; 3],
-                draws: vec![Draw {
-                    mesh: &marker,
-                    placement: Placement::Rigid(RigTForm::from_translation(Cvec3::new(
-                        2.0, 1.0, z,
-                    ))),
-                    scale: Cvec3::new(1.0, 1.0, 1.0),
-                    tint: [1.0; 3],
-                }],
-            };
-            let (fb, _) = scene.render_samples(&settings(101, 101));
-            let drawn: Vec<(u32, u32)> = (0..101)
-                .flat_map(|y| (0..101).map(move |x| (x, y)))
-                .filter(|&(x, y)| fb.depth(x, y, 0) < 1.0)
-                .collect();
+            let drawn = pixels_of_a_marker(camera, Cvec3::new(2.0, 1.0, z));
             assert_eq!(drawn, [(60, 45)], "z = {z}");
         }
     }
