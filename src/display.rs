@@ -101,3 +101,30 @@ impl Display for EulerRot {
         fmt::Debug::fmt(self, f)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::format;
+
+    #[test]
+    fn every_type_prints_its_components_in_array_order_with_the_options() {
+        assert_eq!(format!("{}", Cvec3::new(1.0, -2.5, 3.0)), "[1, -2.5, 3]");
+        assert_eq!(
+            format!("{:.1}", Cvec4::new(0.25, 1.0, 2.0, 1.0)),
+            "[0.2, 1.0, 2.0, 1.0]"
+        );
+        assert_eq!(
+            format!("{:.2}", Quat::new(0.5, -0.5, 0.5, 0.5)),
+            "[0.50, -0.50, 0.50, 0.50]"
+        );
+        let a = RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::IDENTITY);
+        assert_eq!(format!("{a}"), "{t: [1, 2, 3], r: [1, 0, 0, 0]}");
+        let m = Matrix4::from_translation(Cvec3::new(7.0, 8.0, 9.0));
+        assert_eq!(
+            format!("{m:.0}"),
+            "[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [7, 8, 9, 1]]"
+        );
+        assert_eq!(format!("{}", EulerRot::YXZ), "YXZ");
+    }
+}
