@@ -3,7 +3,9 @@
 //! [`rigtform_embedded::measure`], after an empty bracket (the
 //! calibration), once each, past the filters' warm-up. Run it with
 //! `cargo xtask filter-cost` (`--features fast-math` for micromath's
-//! kernels), not directly.
+//! kernels), not directly. The first row also names the filter's state
+//! size (`state <bytes> bytes`, `size_of` on this target), which the xtask
+//! checks against its budget with the instruction counts.
 
 #![no_std]
 #![no_main]
@@ -41,6 +43,20 @@ fn sample(i: u32) -> (Cvec3, Cvec3, Cvec3) {
     (gyr, acc, mag)
 }
 
+/// `n` in decimal, written into the end of `digits`.
+fn decimal(mut n: usize, digits: &mut [u8; 10]) -> &str {
+    let mut start = digits.len();
+    loop {
+        start -= 1;
+        digits[start] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 || start == 0 {
+            break;
+        }
+    }
+    core::str::from_utf8(&digits[start..]).unwrap_or("?")
+}
+
 #[entry]
 fn main() -> ! {
     let mut six = OrientationFilter::new(FilterParams::DEFAULT);
@@ -55,7 +71,10 @@ fn main() -> ! {
     let (gyr, acc, mag) = sample(500);
     let q = Quat::from_rotation_y(0.4);
 
-    for name in ROWS {
+    let mut digits = [0u8; 10];
+    let state = decimal(core::mem::size_of::<OrientationFilter>(), &mut digits);
+    measure::row(1, &[ROWS[0], "state", state, "bytes"]);
+    for name in &ROWS[1..] {
         measure::row(1, &[name]);
     }
 
