@@ -1,7 +1,7 @@
 //! [`OrientationFilter`]: gyroscope + accelerometer (6D) and + magnetometer
 //! (9D) attitude estimation, with gyro-bias estimation.
 
-use super::low_pass::{low_pass, smoothing_factor};
+use super::low_pass::{butterworth, butterworth_step, low_pass, smoothing_factor};
 use super::rest::RestDetector;
 use super::FilterParams;
 use crate::float;
@@ -10,6 +10,12 @@ use crate::vec::Cvec3;
 
 /// Time constant with which the magnetic reference follows the field.
 const MAG_REFERENCE_TAU: f32 = 60.0;
+
+/// The standard deviation of the bias estimate at rest, in rad/s
+/// (0.01 °/s): a MEMS gyro's noise density of about 0.01 °/s/√Hz averaged
+/// over `tau_bias_rest` (3 s) leaves 0.004 °/s, and the bias moves by
+/// about as much again within the low-pass's delay.
+const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 
 /// An orientation filter for gyroscope + accelerometer (6D, [`update`](Self::update))
 /// and gyroscope + accelerometer + magnetometer (9D,
@@ -25,15 +31,18 @@ const MAG_REFERENCE_TAU: f32 = 60.0;
 ///    ([`Quat::integrate`]). It maps the sensor frame into an almost
 ///    inertial frame, which drifts only as slowly as the gyro errors.
 /// 2. The accelerometer, rotated into that frame, goes through a
-///    critically damped second-order low-pass (two first-order stages of
-///    `tau_acc / 2`). In an inertial frame, linear acceleration is the
-///    derivative of velocity, which stays bounded, so the average tends to
-///    gravity: shaking, running and vibration average out, rather than
-///    tilting the estimate as in a filter that trusts each sample's
-///    direction. This is the central idea of VQF (Laidig and Seel,
-///    *VQF: Highly Accurate IMU Orientation Estimation with Bias Estimation
-///    and Magnetic Disturbance Rejection*, Information Fusion 91, 2023),
-///    here in a simpler filter.
+///    second-order Butterworth low-pass with time constant `tau_acc`. In an
+///    inertial frame, linear acceleration is the derivative of velocity,
+///    which stays bounded, so the average tends to gravity: shaking,
+///    running and vibration average out, rather than tilting the estimate
+///    as in a filter that trusts each sample's direction. This is the
+///    central idea of VQF (Laidig and Seel, *VQF: Highly Accurate IMU
+///    Orientation Estimation with Bias Estimation and Magnetic Disturbance
+///    Rejection*, Information Fusion 91, 2023), here in a simpler filter.
+///    The Butterworth has the same delay as two first-order stages of
+///    `tau_acc / 2` (both lag a steady drift by `tau_acc`), but its poles
+///    are `sqrt(2)` times closer to zero, so it passes half the
+///    acceleration at every frequency well above `1 / tau_acc`.
 /// 3. `correction` is then turned, about a horizontal axis, by the
 ///    smallest rotation that makes the averaged vector point up: the
 ///    inclination correction. It is skipped while the averaged magnitude is
@@ -46,12 +55,17 @@ const MAG_REFERENCE_TAU: f32 = 60.0;
 /// 5. Gyro bias: while at rest (rest detection on gyro and accelerometer),
 ///    the bias low-passes the raw gyro. During motion, each inclination
 ///    correction, expressed in the sensor frame, is the drift a bias error
-///    caused; the bias follows it with time constant `tau_bias` (Mahony's
-///    integral term, in time-constant form), when the sample passes the
-///    acceleration gate. As the sensor turns, every sensor axis spends
-///    time horizontal, where the inclination shows its bias. The heading
-///    correction never feeds the bias, so that a magnetic disturbance
-///    cannot corrupt it (nor, through it, the inclination).
+///    caused; the bias follows it as a scalar Kalman filter would, with the
+///    time constant `bias_noise^2 / variance` (never shorter than
+///    `tau_bias`), when the sample passes the acceleration gate. The
+///    variance grows with `bias_drift` while the bias is not measured,
+///    falls towards (0.01 °/s)^2 at rest, and shrinks with each motion
+///    update. So a bias just learned at rest is barely moved by the
+///    corrections that linear accelerations cause, while one never seen at
+///    rest is learned from them. As the sensor turns, every sensor axis
+///    spends time horizontal, where the inclination shows its bias. The
+///    heading correction never feeds the bias, so that a magnetic
+///    disturbance cannot corrupt it (nor, through it, the inclination).
 ///
 /// The first sample with a usable accelerometer vector sets the
 /// inclination (the low-pass starts there, as if at rest); with a
@@ -64,15 +78,18 @@ const MAG_REFERENCE_TAU: f32 = 60.0;
 ///
 /// # State and cost
 ///
-/// 156 bytes including the 44 of the parameters (`size_of`, checked by a
-/// test), no allocation. A 6D update costs three quaternion products,
-/// three vector rotations, four normalizations, an atan2, three `exp_m1`
-/// for the smoothing factors (four at rest) and a handful of vector
-/// operations; the magnetometer adds two products, a rotation, an atan2, a
-/// sine-cosine and two `exp_m1`. Executed instructions per update
-/// on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s", LTO, counted
-/// by `cargo xtask filter-cost`, by hand: CI does not check them): 1,351 (6D)
-/// and 1,891 (9D) with the default kernels, 1,353 and 1,856 with `fast-math`.
+/// 168 bytes including the 52 of the parameters (`size_of`, checked by a
+/// test and by `cargo xtask filter-cost` on the target), no allocation. A
+/// 6D update costs three quaternion products, three vector rotations, four
+/// normalizations, an atan2, a sine-cosine and an `exp_m1` for the
+/// accelerometer low-pass, two more `exp_m1` for smoothing factors (three
+/// at rest) and a handful of vector operations; the magnetometer adds two
+/// products, a rotation, an atan2, a sine-cosine and two `exp_m1`.
+/// Executed instructions per update on the emulated Cortex-M4F (QEMU
+/// mps2-an386, opt-level "s", LTO), counted by `cargo xtask filter-cost`,
+/// which fails above the budget of 1,600 (6D) and 2,200 (9D) instructions
+/// and 256 bytes of state: 1,490 (6D) and 2,035 (9D) with the default
+/// kernels.
 ///
 /// # Bad input
 ///
@@ -125,9 +142,10 @@ pub struct OrientationFilter {
     strapdown: Quat,
     /// The almost inertial frame to earth: all corrections.
     correction: Quat,
-    /// The two stages of the accelerometer low-pass, in the inertial frame.
-    acc_stage1: Cvec3,
-    acc_stage2: Cvec3,
+    /// The accelerometer low-pass in the inertial frame: its output, and
+    /// its rate of change times `tau_acc`.
+    acc_average: Cvec3,
+    acc_rate: Cvec3,
     /// The gyro bias estimate, rad/s, sensor frame.
     bias: Cvec3,
     rest: RestDetector,
@@ -136,6 +154,8 @@ pub struct OrientationFilter {
     mag_reference: Cvec3,
     /// Whether the inclination has been set from an accelerometer sample.
     initialized: bool,
+    /// The variance of the bias estimate, (rad/s)^2.
+    bias_variance: f32,
 }
 
 impl OrientationFilter {
@@ -158,12 +178,13 @@ impl OrientationFilter {
             params,
             strapdown: Quat::IDENTITY,
             correction: Quat::IDENTITY,
-            acc_stage1: Cvec3::ZERO,
-            acc_stage2: Cvec3::ZERO,
+            acc_average: Cvec3::ZERO,
+            acc_rate: Cvec3::ZERO,
             bias: Cvec3::ZERO,
             rest: RestDetector::new(),
             mag_reference: Cvec3::NAN,
             initialized: false,
+            bias_variance: params.max_bias * params.max_bias,
         }
     }
 
@@ -185,9 +206,7 @@ impl OrientationFilter {
     pub fn with_attitude(params: FilterParams, attitude: Quat) -> Self {
         let mut f = Self::new(params);
         f.correction = attitude;
-        let gravity = Cvec3::new(0.0, 0.0, params.gravity);
-        f.acc_stage1 = gravity;
-        f.acc_stage2 = gravity;
+        f.acc_average = Cvec3::new(0.0, 0.0, params.gravity);
         f.initialized = true;
         f
     }
@@ -327,12 +346,17 @@ impl OrientationFilter {
             self.rest.interrupt();
         }
         let resting = self.is_resting();
+        // The bias estimate's variance grows as the bias wanders, and at
+        // rest falls towards what the raw gyro tells.
+        // The estimate is clipped to max_bias, so its variance stays below
+        // max_bias^2 (which also keeps it finite).
+        self.bias_variance =
+            (self.bias_variance + p.bias_drift * p.bias_drift * dt).min(p.max_bias * p.max_bias);
         if resting {
-            self.set_bias(low_pass(
-                self.bias,
-                gyr,
-                smoothing_factor(dt, p.tau_bias_rest),
-            ));
+            let alpha = smoothing_factor(dt, p.tau_bias_rest);
+            self.set_bias(low_pass(self.bias, gyr, alpha));
+            let rest = REST_BIAS_SIGMA * REST_BIAS_SIGMA;
+            self.bias_variance += (rest - self.bias_variance) * alpha;
         }
 
         self.strapdown = self.strapdown.integrate(gyr - self.bias, dt);
@@ -355,7 +379,18 @@ impl OrientationFilter {
         // no bias (see max_bias).
         let error = attitude.inv() * drift * (1.0 / dt);
         if !resting && gated && error.norm() <= p.max_bias {
-            self.set_bias(self.bias - error * smoothing_factor(dt, p.tau_bias));
+            // A continuous Kalman update: the gain is variance / noise^2
+            // per second, and the variance shrinks by the same fraction.
+            let variance = self.bias_variance;
+            let tau = (p.bias_noise * p.bias_noise / variance).max(p.tau_bias);
+            // 0 / 0 (no noise, no uncertainty): nothing to learn.
+            let alpha = if tau.is_nan() {
+                0.0
+            } else {
+                smoothing_factor(dt, tau)
+            };
+            self.set_bias(self.bias - error * alpha);
+            self.bias_variance = variance * (1.0 - alpha);
         }
         attitude
     }
@@ -368,19 +403,22 @@ impl OrientationFilter {
         let inertial = self.strapdown * acc;
         let first = !self.initialized;
         if first {
-            self.acc_stage1 = inertial;
-            self.acc_stage2 = inertial;
+            self.acc_average = inertial;
+            self.acc_rate = Cvec3::ZERO;
             self.initialized = true;
         }
-        let alpha = smoothing_factor(dt, 0.5 * p.tau_acc);
-        let stage1 = low_pass(self.acc_stage1, inertial, alpha);
-        let stage2 = low_pass(self.acc_stage2, stage1, alpha);
-        self.acc_stage1 = stage1;
-        self.acc_stage2 = stage2;
-        if (stage2.norm() - p.gravity).abs() > p.acc_gate * p.gravity {
+        let (average, rate) = butterworth_step(
+            self.acc_average,
+            self.acc_rate,
+            inertial,
+            butterworth(dt, p.tau_acc),
+        );
+        self.acc_average = average;
+        self.acc_rate = rate;
+        if (average.norm() - p.gravity).abs() > p.acc_gate * p.gravity {
             return Cvec3::ZERO;
         }
-        let Some(up) = (self.correction * stage2).try_normalize() else {
+        let Some(up) = (self.correction * average).try_normalize() else {
             return Cvec3::ZERO;
         };
         let turn = rotation_to_up(up);

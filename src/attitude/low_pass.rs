@@ -42,6 +42,57 @@ pub(crate) fn low_pass(value: Cvec3, input: Cvec3, alpha: f32) -> Cvec3 {
     value + (input - value) * alpha
 }
 
+/// The coefficients of one step of a second-order Butterworth low-pass
+/// with time constant `tau`, exact for an input held over the step (its
+/// poles are `(-1 +- i) / tau`, its group delay at low frequency is `tau`,
+/// as for a first-order low-pass of the same `tau`, or two first-order
+/// stages of `tau / 2`). With the state as the output's distance `e` from
+/// the input and its rate scaled by `tau`, `r`, one step is
+/// `e' = (c + s) e + s r`, `r' = (c - s) r - 2 s e`, where
+/// `c = exp(-dt / tau) cos(dt / tau)` and `s = exp(-dt / tau) sin(dt / tau)`;
+/// [`butterworth`] returns `(c, s)`. The same edges as
+/// [`smoothing_factor`]: `dt <= 0` gives `(1, 0)` (nothing moves), `tau <= 0`
+/// or `dt / tau` beyond 30 (where `exp` leaves less than 1e-13) gives
+/// `(0, 0)` (the output is the input), `tau = +inf` gives `(1, 0)`.
+#[inline]
+#[must_use]
+pub(crate) fn butterworth(dt: f32, tau: f32) -> (f32, f32) {
+    if dt.is_nan() || tau.is_nan() {
+        return (f32::NAN, f32::NAN);
+    }
+    if dt <= 0.0 {
+        return (1.0, 0.0);
+    }
+    if tau <= 0.0 {
+        return (0.0, 0.0);
+    }
+    let x = dt / tau;
+    if x > 30.0 {
+        return (0.0, 0.0);
+    }
+    let decay = 1.0 + float::exp_m1(-x);
+    let (sin, cos) = float::sin_cos(x);
+    (decay * cos, decay * sin)
+}
+
+/// One step of the second-order Butterworth low-pass of a 3-vector (see
+/// [`butterworth`] for `(c, s)`): `output` moves towards `input`, `rate` is
+/// its rate of change times `tau`. Returns the new `(output, rate)`.
+#[inline]
+#[must_use]
+pub(crate) fn butterworth_step(
+    output: Cvec3,
+    rate: Cvec3,
+    input: Cvec3,
+    (c, s): (f32, f32),
+) -> (Cvec3, Cvec3) {
+    let e = output - input;
+    (
+        input + e * (c + s) + rate * s,
+        rate * (c - s) - e * (2.0 * s),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -193,12 +193,14 @@ fn print_table(trials: &[Trial]) {
         let (six, nine) = (t.six.rmse, t.nine.rmse);
         let (vqf_six, vqf_nine) = (t.vqf_six.rmse, t.vqf_nine.rmse);
         println!(
-            "  {}: 6D inclination at or below VQF's: {} ({:.2}x); 9D total at or below VQF's: {} ({:.2}x)",
+            "  {}: 6D inclination at or below VQF's: {} ({:.3} against {:.3}); 9D total at or below VQF's: {} ({:.3} against {:.3})",
             t.name,
             check(six.inclination <= vqf_six.inclination),
-            six.inclination / vqf_six.inclination,
+            six.inclination,
+            vqf_six.inclination,
             check(nine.total <= vqf_nine.total),
-            nine.total / vqf_nine.total,
+            nine.total,
+            vqf_nine.total,
         );
     }
     let verdicts: Vec<_> = trials
