@@ -29,12 +29,14 @@
 //! - [`OrientationFilter`] with [`FilterParams`]: gyroscope + accelerometer
 //!   (+ magnetometer) fusion with gyro-bias estimation.
 
+mod diagnostics;
 mod filter;
 mod low_pass;
 mod params;
 mod rest;
 mod smoother;
 
+pub use diagnostics::Diagnostics;
 pub use filter::OrientationFilter;
 pub use params::FilterParams;
 pub use smoother::Smoother;

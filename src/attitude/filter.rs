@@ -3,13 +3,16 @@
 
 use super::low_pass::{butterworth, butterworth_step, low_pass, smoothing_factor};
 use super::rest::RestDetector;
-use super::FilterParams;
+use super::{Diagnostics, FilterParams};
 use crate::float;
 use crate::quat::Quat;
 use crate::vec::Cvec3;
 
 /// Time constant with which the magnetic reference follows the field.
 const MAG_REFERENCE_TAU: f32 = 60.0;
+
+/// The fraction of `gyro_range` from which a reading counts as saturated.
+const SATURATION: f32 = 0.99;
 
 /// The standard deviation of the bias estimate at rest, in rad/s
 /// (0.01 °/s): a MEMS gyro's noise density of about 0.01 °/s/√Hz averaged
@@ -78,7 +81,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///
 /// # State and cost
 ///
-/// 168 bytes including the 52 of the parameters (`size_of`, checked by a
+/// 192 bytes including the 56 of the parameters (`size_of`, checked by a
 /// test and by `cargo xtask filter-cost` on the target), no allocation. A
 /// 6D update costs three quaternion products, three vector rotations, four
 /// normalizations, an atan2, a sine-cosine and an `exp_m1` for the
@@ -156,6 +159,11 @@ pub struct OrientationFilter {
     initialized: bool,
     /// The variance of the bias estimate, (rad/s)^2.
     bias_variance: f32,
+    /// Seconds since the first usable accelerometer sample or the last
+    /// saturated gyro sample: the corrections' time constants are at most
+    /// this.
+    settling: f32,
+    diagnostics: Diagnostics,
 }
 
 impl OrientationFilter {
@@ -185,6 +193,17 @@ impl OrientationFilter {
             mag_reference: Cvec3::NAN,
             initialized: false,
             bias_variance: params.max_bias * params.max_bias,
+            settling: 0.0,
+            diagnostics: Diagnostics {
+                acc_error: 0.0,
+                mag_error: 0.0,
+                initialising: true,
+                recovering: false,
+                gyro_saturated: false,
+                resting: false,
+                acc_ignored: false,
+                mag_ignored: false,
+            },
         }
     }
 
@@ -208,6 +227,8 @@ impl OrientationFilter {
         f.correction = attitude;
         f.acc_average = Cvec3::new(0.0, 0.0, params.gravity);
         f.initialized = true;
+        f.settling = f32::INFINITY;
+        f.diagnostics.initialising = false;
         f
     }
 
@@ -346,6 +367,20 @@ impl OrientationFilter {
             self.rest.interrupt();
         }
         let resting = self.is_resting();
+        let saturated = gyr.x.abs().max(gyr.y.abs()).max(gyr.z.abs()) >= SATURATION * p.gyro_range;
+        if saturated {
+            self.settling = 0.0;
+            self.diagnostics.recovering = true;
+        } else if self.initialized {
+            self.settling += dt;
+        }
+        let settled = self.settling >= p.tau_acc;
+        if settled {
+            self.diagnostics.initialising = false;
+            self.diagnostics.recovering = false;
+        }
+        self.diagnostics.gyro_saturated = saturated;
+        self.diagnostics.resting = resting;
         // The bias estimate's variance grows as the bias wanders, and at
         // rest falls towards what the raw gyro tells.
         // The estimate is clipped to max_bias, so its variance stays below
@@ -366,11 +401,14 @@ impl OrientationFilter {
         // magnetic disturbance must not reach the bias either.
         let drift = match acc {
             Some(acc) => self.correct_inclination(acc, dt),
-            None => Cvec3::ZERO,
+            None => None,
         };
-        if let Some(mag) = mag {
-            self.correct_heading(mag, dt);
-        }
+        self.diagnostics.acc_ignored = drift.is_none();
+        let drift = drift.unwrap_or(Cvec3::ZERO);
+        self.diagnostics.acc_error = drift.norm();
+        let heading = mag.map(|mag| self.correct_heading(mag, dt));
+        self.diagnostics.mag_ignored = heading.is_some_and(|h| h.is_none());
+        self.diagnostics.mag_error = heading.flatten().unwrap_or(0.0);
 
         let attitude = self.attitude();
         let gated = acc.is_some_and(|a| (a.norm() - p.gravity).abs() <= p.acc_gate * p.gravity);
@@ -378,7 +416,8 @@ impl OrientationFilter {
         // frame, the bias error that would cause it. Faster corrections are
         // no bias (see max_bias).
         let error = attitude.inv() * drift * (1.0 / dt);
-        if !resting && gated && error.norm() <= p.max_bias {
+        // While settling, the corrections are convergence, not bias.
+        if settled && !resting && gated && error.norm() <= p.max_bias {
             // A continuous Kalman update: the gain is variance / noise^2
             // per second, and the variance shrinks by the same fraction.
             let variance = self.bias_variance;
@@ -397,8 +436,9 @@ impl OrientationFilter {
 
     /// Averages the accelerometer in the inertial frame and turns the
     /// correction so that the average points up. Returns the correction's
-    /// rotation vector (earth frame).
-    fn correct_inclination(&mut self, acc: Cvec3, dt: f32) -> Cvec3 {
+    /// rotation vector (earth frame; zero for the first sample, which sets
+    /// the inclination), `None` if the average is outside the gate.
+    fn correct_inclination(&mut self, acc: Cvec3, dt: f32) -> Option<Cvec3> {
         let p = self.params;
         let inertial = self.strapdown * acc;
         let first = !self.initialized;
@@ -411,35 +451,34 @@ impl OrientationFilter {
             self.acc_average,
             self.acc_rate,
             inertial,
-            butterworth(dt, p.tau_acc),
+            butterworth(dt, p.tau_acc.min(self.settling)),
         );
         self.acc_average = average;
         self.acc_rate = rate;
         if (average.norm() - p.gravity).abs() > p.acc_gate * p.gravity {
-            return Cvec3::ZERO;
+            return None;
         }
-        let Some(up) = (self.correction * average).try_normalize() else {
-            return Cvec3::ZERO;
-        };
+        let up = (self.correction * average).try_normalize()?;
         let turn = rotation_to_up(up);
         self.correction = (turn * self.correction).normalize();
         // Setting the inclination from the first sample is no drift.
-        if first {
+        Some(if first {
             Cvec3::ZERO
         } else {
             turn.to_scaled_axis()
-        }
+        })
     }
 
     /// Turns the correction about the vertical towards magnetic north, if
-    /// the field passes the disturbance gate.
-    fn correct_heading(&mut self, mag: Cvec3, dt: f32) {
+    /// the field passes the disturbance gate. Returns the heading error it
+    /// saw (radians east of north), `None` if the field was not used.
+    fn correct_heading(&mut self, mag: Cvec3, dt: f32) -> Option<f32> {
         let p = self.params;
         let field = self.attitude() * mag;
         let horizontal = Cvec3::new(field.x, field.y, 0.0).norm();
         // NaN, infinite or zero field, or one without a horizontal part.
         if !horizontal.is_finite() || horizontal <= 0.0 {
-            return;
+            return None;
         }
         let seen = Cvec3::new(horizontal, field.z, 0.0);
         let first = !self.mag_reference.is_finite();
@@ -449,7 +488,7 @@ impl OrientationFilter {
         let reference = self.mag_reference;
         self.mag_reference = low_pass(reference, seen, smoothing_factor(dt, MAG_REFERENCE_TAU));
         if !first && (seen - reference).norm() > p.mag_gate * reference.norm() {
-            return;
+            return None;
         }
         // The field's angle east of north; turning by it about +z brings
         // it to north.
@@ -457,10 +496,31 @@ impl OrientationFilter {
         let fraction = if first {
             1.0
         } else {
-            smoothing_factor(dt, p.tau_mag)
+            smoothing_factor(dt, p.tau_mag.min(self.settling))
         };
         let turn = Quat::from_rotation_z(error * fraction);
         self.correction = (turn * self.correction).normalize();
+        Some(error)
+    }
+
+    /// The state flags and internal errors after the last update (see
+    /// [`Diagnostics`]), for a firmware to log.
+    ///
+    /// ```
+    /// use rigtform::attitude::{FilterParams, OrientationFilter};
+    /// use rigtform::Cvec3;
+    /// let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    /// let g = Cvec3::new(0.0, 0.0, 9.81);
+    /// for _ in 0..400 {
+    ///     f.update(Cvec3::ZERO, g, 0.01); // 4 s still
+    /// }
+    /// let d = f.diagnostics();
+    /// assert!(d.resting && !d.initialising && !d.acc_ignored);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn diagnostics(&self) -> Diagnostics {
+        self.diagnostics
     }
 }
 

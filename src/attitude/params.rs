@@ -96,6 +96,16 @@ pub struct FilterParams {
     /// constant, so that a new environment is accepted in the end (after
     /// about a minute for a field 30 % off; longer the further off it is).
     pub mag_gate: f32,
+    /// The gyro's full scale in rad/s (default infinite: unknown, no
+    /// saturation detected). A reading within 1 % of it on any axis is
+    /// taken as saturated (a sensor at full scale reads its largest code,
+    /// which scale calibration may move slightly below the range): the
+    /// integrated gyro has lost the true rate, so the filter recovers as at
+    /// start-up, with time constants that start at zero and grow back to
+    /// `tau_acc` and `tau_mag` over `tau_acc` seconds after the last
+    /// saturated sample (see [`Diagnostics`](super::Diagnostics)). Set it
+    /// to the sensor's range, for instance 2000 °/s, 34.9 rad/s.
+    pub gyro_range: f32,
 }
 
 impl FilterParams {
@@ -121,6 +131,7 @@ impl FilterParams {
         rest_time: 1.5,
         acc_gate: 0.1,
         mag_gate: 0.1,
+        gyro_range: f32::INFINITY,
     };
 }
 
@@ -141,6 +152,7 @@ impl FilterParams {
             self.rest_time,
             self.acc_gate,
             self.mag_gate,
+            self.gyro_range,
         ]
         .iter()
         .any(|p| p.is_nan())
