@@ -111,7 +111,7 @@ pub mod kani_kernels {
 }
 
 pub use matrix::Matrix4;
-pub use quat::Quat;
+pub use quat::{EulerRot, Quat};
 pub use rigtform::RigTForm;
 pub use vec::{Cvec3, Cvec4};
 

@@ -5,16 +5,20 @@
 //! One file per further concept: `quat/power.rs` (the notes' "Power": the
 //! polar form and `pow`), `quat/interpolate.rs` ("to interpolate": `slerp`,
 //! `nlerp`, `blend`) and `quat/exp_log.rs` (the exponential and logarithm
-//! maps, and gyro integration built on them).
+//! maps, and gyro integration built on them) and `quat/euler.rs` (Euler
+//! angles).
 
 use core::ops::{Mul, Neg};
 
 use crate::float::{self, scale_for_squares};
 use crate::vec::{Cvec3, Cvec4};
 
+mod euler;
 mod exp_log;
 mod interpolate;
 mod power;
+
+pub use euler::EulerRot;
 
 use power::Polar;
 

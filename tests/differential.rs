@@ -10,7 +10,7 @@ use rigtform_testkit as testkit;
 
 use nalgebra as na;
 use rigtform::accuracy;
-use rigtform::{Cvec3, Matrix4, Quat};
+use rigtform::{Cvec3, EulerRot, Matrix4, Quat};
 use testkit::{angle_error, draw_count, slerp64, to_f64, Draws, Worst};
 
 fn norm_error(q: Quat) -> f64 {
@@ -263,4 +263,50 @@ fn inverse_of_general_matrices_is_within_its_bound() {
         "too few well-conditioned draws: {tested}"
     );
     worst.check(accuracy::INVERSE_MAX_REL_ERROR);
+}
+
+const EULER_ORDERS: [EulerRot; 6] = [
+    EulerRot::ZYX,
+    EulerRot::ZXY,
+    EulerRot::YXZ,
+    EulerRot::YZX,
+    EulerRot::XYZ,
+    EulerRot::XZY,
+];
+
+#[test]
+fn euler_angles_are_within_their_bound_at_gimbal_lock_too() {
+    use core::f64::consts::{FRAC_PI_2, PI};
+    let mut draws = Draws::new(8);
+    let mut from = Worst::new("Quat::from_euler: angle error");
+    let mut norm = Worst::new("Quat::from_euler: |norm - 1|");
+    let mut to = Worst::new("Quat::to_euler: angle error of the angles' rotation");
+    for i in 0..draw_count() {
+        let order = EULER_ORDERS[i % 6];
+        let a = draws.uniform(-PI, PI) as f32;
+        let c = draws.uniform(-PI, PI) as f32;
+        // One draw in four at or within a hair of gimbal lock.
+        let b = match i % 8 {
+            0 => FRAC_PI_2 as f32,
+            1 => -FRAC_PI_2 as f32,
+            2 | 3 => {
+                (FRAC_PI_2 * draws.uniform(-1.0, 1.0).signum() - draws.uniform(-1e-4, 1e-4)) as f32
+            }
+            _ => draws.uniform(-FRAC_PI_2, FRAC_PI_2) as f32,
+        };
+        let got = Quat::from_euler(order, a, b, c);
+        let want = testkit::euler64(order, a as f64, b as f64, c as f64);
+        from.see(angle_error(got, want), || format!("{order:?} {a} {b} {c}"));
+        norm.see(norm_error(got), || format!("{order:?} {a} {b} {c}"));
+
+        // to_euler of a random rotation, and of the rotation just built.
+        for q in [draws.unit_quat(), got] {
+            let (x, y, z) = q.to_euler(order);
+            let back = testkit::euler64(order, x as f64, y as f64, z as f64);
+            to.see(angle_error(q, back), || format!("{order:?} {q:?}"));
+        }
+    }
+    from.check(accuracy::EULER_MAX_ANGLE_ERROR);
+    norm.check(accuracy::EULER_MAX_ANGLE_ERROR);
+    to.check(accuracy::EULER_MAX_ANGLE_ERROR);
 }
