@@ -116,7 +116,7 @@ fn broad_16_diagnostics_and_linear_acceleration() {
             assert!(!d.initialising, "7 s in, past tau_acc");
         }
         let a = filter.earth_acceleration(s.acc);
-        sum = sum + a;
+        sum += a;
         largest = largest.max(a.norm());
         // The first 20 s: the sensor lies still.
         if (1000..5700).contains(&i) {

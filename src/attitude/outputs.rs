@@ -77,7 +77,7 @@ impl OrientationFilter {
     }
 
     /// The attitude as Euler angles in the given order (see [`EulerRot`]
-    /// and [`Quat::to_euler`]), in radians; with `EulerRot::ZYX`, yaw about
+    /// and [`Quat::to_euler`](crate::Quat::to_euler)), in radians; with `EulerRot::ZYX`, yaw about
     /// the earth's up (anticlockwise from the east-north frame, so
     /// `-heading`), then pitch, then roll.
     ///
