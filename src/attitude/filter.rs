@@ -91,8 +91,8 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// Executed instructions per update on the emulated Cortex-M4F (QEMU
 /// mps2-an386, opt-level "s", LTO), counted by `cargo xtask filter-cost`,
 /// which fails above the budget of 1,600 (6D) and 2,200 (9D) instructions
-/// and 256 bytes of state: 1,490 (6D) and 2,035 (9D) with the default
-/// kernels.
+/// and 256 bytes of state: 1,461 (6D) and 1,956 (9D) with the default
+/// kernels, 1,463 and 1,918 with `fast-math`.
 ///
 /// # Bad input
 ///
