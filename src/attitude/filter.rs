@@ -61,6 +61,13 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///    caused; the bias follows it as a scalar Kalman filter would, with the
 ///    time constant `bias_noise^2 / variance` (never shorter than
 ///    `tau_bias`), when the sample passes the acceleration gate. The
+///    correction is taken to the sensor frame by the attitude averaged
+///    through the accelerometer's low-pass (its first two rows, the
+///    earth's horizontal axes in the sensor frame), since the average it
+///    corrects saw the bias through that low-pass: in rotation faster than
+///    `1 / tau_acc` the averaged axes shrink, and so does what the
+///    correction is taken to say about the bias (the measurement model of
+///    VQF's bias estimation, in a scalar filter). The
 ///    variance grows with `bias_drift` while the bias is not measured,
 ///    falls towards (0.01 °/s)^2 at rest, and shrinks with each motion
 ///    update. So a bias just learned at rest is barely moved by the
@@ -81,7 +88,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///
 /// # State and cost
 ///
-/// 192 bytes including the 56 of the parameters (`size_of`, checked by a
+/// 240 bytes including the 56 of the parameters (`size_of`, checked by a
 /// test and by `cargo xtask filter-cost` on the target), no allocation. A
 /// 6D update costs three quaternion products, three vector rotations, four
 /// normalizations, an atan2, a sine-cosine and an `exp_m1` for the
@@ -164,6 +171,11 @@ pub struct OrientationFilter {
     /// this.
     settling: f32,
     diagnostics: Diagnostics,
+    /// The earth's x and y axes in the sensor frame (the first two rows of
+    /// the attitude's matrix), through the same low-pass as the
+    /// accelerometer, and their rates times `tau_acc`.
+    axes_average: [Cvec3; 2],
+    axes_rate: [Cvec3; 2],
 }
 
 impl OrientationFilter {
@@ -194,6 +206,8 @@ impl OrientationFilter {
             initialized: false,
             bias_variance: params.max_bias * params.max_bias,
             settling: 0.0,
+            axes_average: [Cvec3::X, Cvec3::Y],
+            axes_rate: [Cvec3::ZERO, Cvec3::ZERO],
             diagnostics: Diagnostics {
                 acc_error: 0.0,
                 mag_error: 0.0,
@@ -226,6 +240,7 @@ impl OrientationFilter {
         let mut f = Self::new(params);
         f.correction = attitude;
         f.acc_average = Cvec3::new(0.0, 0.0, params.gravity);
+        f.axes_average = horizontal_axes(attitude);
         f.initialized = true;
         f.settling = f32::INFINITY;
         f.diagnostics.initialising = false;
@@ -399,8 +414,10 @@ impl OrientationFilter {
         // The inclination correction in the earth frame, as a rotation
         // vector, for the bias. The heading correction is left out: a
         // magnetic disturbance must not reach the bias either.
+        let factors = butterworth(dt, p.tau_acc.min(self.settling));
+        let first = !self.initialized;
         let drift = match acc {
-            Some(acc) => self.correct_inclination(acc, dt),
+            Some(acc) => self.correct_inclination(acc, factors),
             None => None,
         };
         self.diagnostics.acc_ignored = drift.is_none();
@@ -411,13 +428,32 @@ impl OrientationFilter {
         self.diagnostics.mag_error = heading.flatten().unwrap_or(0.0);
 
         let attitude = self.attitude();
+        if acc.is_some() {
+            // The attitude through the accelerometer's low-pass, in the same
+            // steps (see the bias below).
+            let axes = horizontal_axes(attitude);
+            if first {
+                self.axes_average = axes;
+            }
+            for i in 0..2 {
+                (self.axes_average[i], self.axes_rate[i]) =
+                    butterworth_step(self.axes_average[i], self.axes_rate[i], axes[i], factors);
+            }
+        }
         let gated = acc.is_some_and(|a| (a.norm() - p.gravity).abs() <= p.acc_gate * p.gravity);
         // The corrections undid a drift of -drift in dt: in the sensor
         // frame, the bias error that would cause it. Faster corrections are
         // no bias (see max_bias).
-        let error = attitude.inv() * drift * (1.0 / dt);
+        let rate = drift * (1.0 / dt);
+        // The bias error that the average saw is the low-passed attitude's
+        // (the earth's horizontal axes in the sensor frame, averaged as the
+        // accelerometer was), not today's: in fast rotation it averages out,
+        // and so does what the corrections tell of the bias.
+        let [ex, ey] = self.axes_average;
+        let error = ex * rate.x + ey * rate.y;
+        let seen = 0.5 * (ex.norm_squared() + ey.norm_squared());
         // While settling, the corrections are convergence, not bias.
-        if settled && !resting && gated && error.norm() <= p.max_bias {
+        if settled && !resting && gated && rate.norm() <= p.max_bias {
             // A continuous Kalman update: the gain is variance / noise^2
             // per second, and the variance shrinks by the same fraction.
             let variance = self.bias_variance;
@@ -429,7 +465,7 @@ impl OrientationFilter {
                 smoothing_factor(dt, tau)
             };
             self.set_bias(self.bias - error * alpha);
-            self.bias_variance = variance * (1.0 - alpha);
+            self.bias_variance = variance * (1.0 - alpha * seen);
         }
         attitude
     }
@@ -438,7 +474,7 @@ impl OrientationFilter {
     /// correction so that the average points up. Returns the correction's
     /// rotation vector (earth frame; zero for the first sample, which sets
     /// the inclination), `None` if the average is outside the gate.
-    fn correct_inclination(&mut self, acc: Cvec3, dt: f32) -> Option<Cvec3> {
+    fn correct_inclination(&mut self, acc: Cvec3, factors: (f32, f32)) -> Option<Cvec3> {
         let p = self.params;
         let inertial = self.strapdown * acc;
         let first = !self.initialized;
@@ -447,12 +483,7 @@ impl OrientationFilter {
             self.acc_rate = Cvec3::ZERO;
             self.initialized = true;
         }
-        let (average, rate) = butterworth_step(
-            self.acc_average,
-            self.acc_rate,
-            inertial,
-            butterworth(dt, p.tau_acc.min(self.settling)),
-        );
+        let (average, rate) = butterworth_step(self.acc_average, self.acc_rate, inertial, factors);
         self.acc_average = average;
         self.acc_rate = rate;
         if (average.norm() - p.gravity).abs() > p.acc_gate * p.gravity {
@@ -522,6 +553,24 @@ impl OrientationFilter {
     pub fn diagnostics(&self) -> Diagnostics {
         self.diagnostics
     }
+}
+
+/// The earth's x and y axes in the sensor frame: the first two rows of
+/// the matrix of the unit quaternion `q` (sensor to earth).
+fn horizontal_axes(q: Quat) -> [Cvec3; 2] {
+    let Quat { w, x, y, z } = q;
+    [
+        Cvec3::new(
+            1.0 - 2.0 * (y * y + z * z),
+            2.0 * (x * y - w * z),
+            2.0 * (x * z + w * y),
+        ),
+        Cvec3::new(
+            2.0 * (x * y + w * z),
+            1.0 - 2.0 * (x * x + z * z),
+            2.0 * (y * z - w * x),
+        ),
+    ]
 }
 
 /// The smallest rotation that takes the unit vector `u` to +z: about the
