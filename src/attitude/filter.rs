@@ -91,15 +91,17 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// 240 bytes including the 56 of the parameters (`size_of`, checked by a
 /// test and by `cargo xtask filter-cost` on the target), no allocation. A
 /// 6D update costs three quaternion products, three vector rotations, four
-/// normalizations, an atan2, a sine-cosine and an `exp_m1` for the
-/// accelerometer low-pass, two more `exp_m1` for smoothing factors (three
-/// at rest) and a handful of vector operations; the magnetometer adds two
-/// products, a rotation, an atan2, a sine-cosine and two `exp_m1`.
-/// Executed instructions per update on the emulated Cortex-M4F (QEMU
-/// mps2-an386, opt-level "s", LTO), counted by `cargo xtask filter-cost`,
-/// which fails above the budget of 1,600 (6D) and 2,200 (9D) instructions
-/// and 256 bytes of state: 1,461 (6D) and 1,956 (9D) with the default
-/// kernels, 1,463 and 1,918 with `fast-math`.
+/// normalizations, an atan2, the low-pass of the accelerometer and of two
+/// rows of the attitude matrix (Taylor series for the factors, or an
+/// `exp_m1` and a sine-cosine where `dt / tau_acc` exceeds 1/16), the
+/// smoothing factors of the rest detector and the bias, and a handful of
+/// vector operations; the magnetometer adds two products, a rotation, an
+/// atan2, a sine-cosine and two smoothing factors. Executed instructions
+/// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
+/// LTO), counted by `cargo xtask filter-cost`, which fails above the
+/// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
+/// state: 1,584 (6D) and 2,092 (9D) with the default kernels, 1,586 and
+/// 2,055 with `fast-math`.
 ///
 /// # Bad input
 ///
