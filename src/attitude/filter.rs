@@ -100,8 +100,8 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
 /// LTO), counted by `cargo xtask filter-cost`, which fails above the
 /// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
-/// state: 1,584 (6D) and 2,092 (9D) with the default kernels, 1,586 and
-/// 2,055 with `fast-math`.
+/// state: 1,580 (6D) and 2,086 (9D) with the default kernels, 1,586 and
+/// 2,047 with `fast-math`.
 ///
 /// # Bad input
 ///
@@ -437,9 +437,9 @@ impl OrientationFilter {
             if first {
                 self.axes_average = axes;
             }
-            for i in 0..2 {
-                (self.axes_average[i], self.axes_rate[i]) =
-                    butterworth_step(self.axes_average[i], self.axes_rate[i], axes[i], factors);
+            let rows = self.axes_average.iter_mut().zip(&mut self.axes_rate);
+            for ((average, rate), axis) in rows.zip(axes) {
+                (*average, *rate) = butterworth_step(*average, *rate, axis, factors);
             }
         }
         let gated = acc.is_some_and(|a| (a.norm() - p.gravity).abs() <= p.acc_gate * p.gravity);
