@@ -93,6 +93,7 @@
 
 pub mod accuracy;
 pub mod attitude;
+mod display;
 mod features;
 mod float;
 mod matrix;

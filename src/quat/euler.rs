@@ -59,6 +59,25 @@ pub enum EulerRot {
 }
 
 impl EulerRot {
+    /// The six orders, for code that tries or offers each of them.
+    ///
+    /// ```
+    /// use rigtform::{EulerRot, Quat};
+    /// let q = Quat::from_rotation_x(0.5) * Quat::from_rotation_y(0.25);
+    /// for order in EulerRot::ALL {
+    ///     let (a, b, c) = q.to_euler(order);
+    ///     assert!(Quat::from_euler(order, a, b, c).angle_to(q) < 1e-6);
+    /// }
+    /// ```
+    pub const ALL: [Self; 6] = [
+        Self::ZYX,
+        Self::ZXY,
+        Self::YXZ,
+        Self::YZX,
+        Self::XYZ,
+        Self::XZY,
+    ];
+
     /// Relabels `q`'s vector part so that this order becomes `XYZ`, and
     /// the sign that the third angle takes in those coordinates.
     fn relabel_to_xyz(self, q: Quat) -> (Quat, f32) {
@@ -218,15 +237,6 @@ mod tests {
     use super::*;
     use core::f32::consts::{FRAC_PI_2, PI};
 
-    const ORDERS: [EulerRot; 6] = [
-        EulerRot::ZYX,
-        EulerRot::ZXY,
-        EulerRot::YXZ,
-        EulerRot::YZX,
-        EulerRot::XYZ,
-        EulerRot::XZY,
-    ];
-
     fn axis(order: EulerRot, n: usize) -> fn(f32) -> Quat {
         let names = match order {
             EulerRot::ZYX => "zyx",
@@ -245,7 +255,7 @@ mod tests {
 
     #[test]
     fn from_euler_is_the_product_of_the_three_axis_rotations_in_order() {
-        for order in ORDERS {
+        for order in EulerRot::ALL {
             for (a, b, c) in [(0.3, -0.2, 1.1), (-2.9, 1.5, 0.4), (3.0, -1.0, -3.1)] {
                 let want = axis(order, 0)(a) * axis(order, 1)(b) * axis(order, 2)(c);
                 let got = Quat::from_euler(order, a, b, c);
@@ -256,7 +266,7 @@ mod tests {
 
     #[test]
     fn to_euler_recovers_angles_in_range_and_is_the_same_for_minus_q() {
-        for order in ORDERS {
+        for order in EulerRot::ALL {
             for (a, b, c) in [(0.3, -0.2, 1.1), (-2.9, 1.5, 0.4), (3.0, -1.0, -3.1)] {
                 let q = Quat::from_euler(order, a, b, c);
                 let (x, y, z) = q.to_euler(order);
@@ -268,7 +278,7 @@ mod tests {
 
     #[test]
     fn near_gimbal_lock_the_angles_are_finite_and_give_the_same_rotation() {
-        for order in ORDERS {
+        for order in EulerRot::ALL {
             for b in [FRAC_PI_2, -FRAC_PI_2, FRAC_PI_2 - 1e-4, 1e-3 - FRAC_PI_2] {
                 for (a, c) in [(0.4, 0.0), (1.0, -0.7), (-2.0, 3.0)] {
                     let q = axis(order, 0)(a) * axis(order, 1)(b) * axis(order, 2)(c);
