@@ -101,10 +101,12 @@ mod rigtform;
 mod vec;
 
 /// The float kernels that every transcendental call goes through,
-/// re-exported only under Kani (`cfg(kani)`) so that the proof harnesses
-/// of `rigtform-proofs` can replace them by their contracts. Not part of
-/// the API: ordinary builds do not have this module.
-#[cfg(kani)]
+/// re-exported only under Kani (`cfg(kani)`), so that the proof harnesses
+/// of `rigtform-proofs` can replace them by their contracts, and with the
+/// `kernel-contracts` feature, so that its tests can check that the
+/// kernels meet those contracts. Not part of the API: ordinary builds do
+/// not have this module.
+#[cfg(any(kani, feature = "kernel-contracts"))]
 #[doc(hidden)]
 pub mod kani_kernels {
     pub use crate::float::{atan2, sin_cos, sqrt};

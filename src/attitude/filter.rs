@@ -118,6 +118,7 @@ const MAG_REFERENCE_TAU: f32 = 60.0;
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OrientationFilter {
     /// The parameters; they may be changed between updates.
     pub params: FilterParams,
