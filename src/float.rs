@@ -25,6 +25,9 @@
 //! `Matrix4::perspective`, is libm's `tanf`; `exp_m1`, used by the
 //! smoothing factors, libm's `expm1f`.
 
+// With `fast-math`, micromath's atan2 and `fast_math::atan2_limits` take
+// this kernel's place in the build; only the tests still call it.
+#[cfg_attr(feature = "fast-math", allow(dead_code))]
 mod atan2;
 mod bits;
 #[cfg(feature = "fast-math")]

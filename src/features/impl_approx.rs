@@ -136,7 +136,10 @@ mod tests {
         for k in 0..n {
             let w = nudged(&v, k, 1e-3, make);
             assert!(v.abs_diff_eq(&w, 2e-3), "{v:?} {w:?}");
-            assert!(!v.abs_diff_eq(&w, 5e-4), "component {k} of {v:?} is compared");
+            assert!(
+                !v.abs_diff_eq(&w, 5e-4),
+                "component {k} of {v:?} is compared"
+            );
             assert!(v.relative_eq(&w, 0.0, 1.0) && !v.relative_eq(&w, 0.0, 1e-6));
             assert!(!v.ulps_eq(&w, 0.0, 4), "component {k} of {v:?} is compared");
         }
@@ -155,7 +158,12 @@ mod tests {
         });
         every_component_counts(
             RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::new(0.5, -0.5, 0.5, 0.5)),
-            |a| RigTForm::new(Cvec3::new(a[0], a[1], a[2]), Quat::new(a[3], a[4], a[5], a[6])),
+            |a| {
+                RigTForm::new(
+                    Cvec3::new(a[0], a[1], a[2]),
+                    Quat::new(a[3], a[4], a[5], a[6]),
+                )
+            },
         );
         every_component_counts(
             Matrix4::from_cols_array(&core::array::from_fn(|i| 1.0 + i as f32)),

@@ -51,7 +51,10 @@ mod tests {
     #[test]
     fn every_type_is_its_floats_in_field_order() {
         assert_eq!(floats(&Cvec3::new(1.0, 2.0, 3.0)), [1.0, 2.0, 3.0]);
-        assert_eq!(floats(&Cvec4::new(1.0, 2.0, 3.0, 4.0)), [1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(
+            floats(&Cvec4::new(1.0, 2.0, 3.0, 4.0)),
+            [1.0, 2.0, 3.0, 4.0]
+        );
         assert_eq!(floats(&Quat::new(1.0, 2.0, 3.0, 4.0)), [1.0, 2.0, 3.0, 4.0]);
         let r = RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::new(4.0, 5.0, 6.0, 7.0));
         assert_eq!(floats(&r), [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);

@@ -93,6 +93,9 @@ mod tests {
             g.update_with_mag(gyr, acc, mag, 0.01);
         }
         assert_eq!(g, f);
-        assert!(f.bias().norm() > 0.0, "the state that was saved is not the initial one");
+        assert!(
+            f.bias().norm() > 0.0,
+            "the state that was saved is not the initial one"
+        );
     }
 }
