@@ -88,7 +88,10 @@
 #![deny(missing_docs)]
 // No unsafe code, except the one `vsqrt.f32` instruction of
 // `fpu_sqrt` (src/float/sqrt.rs) on Arm hard-float targets, where the lint is `deny` and
-// that one function allows it.
+// that one function allows it. With the `bytemuck` feature, bytemuck's derive macros
+// write `unsafe impl Pod` and `Zeroable` for the plain-f32 types after checking them
+// (`repr(C)`, no padding, `Pod` fields); the lint does not fire on that generated code
+// (src/features/impl_bytemuck.rs).
 #![cfg_attr(
     not(all(target_arch = "arm", target_abi = "eabihf")),
     forbid(unsafe_code)
