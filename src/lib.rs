@@ -100,6 +100,7 @@
 
 pub mod accuracy;
 pub mod attitude;
+mod display;
 mod features;
 mod float;
 mod matrix;
@@ -120,7 +121,7 @@ pub mod kani_kernels {
 }
 
 pub use matrix::Matrix4;
-pub use quat::Quat;
+pub use quat::{EulerRot, Quat};
 pub use rigtform::RigTForm;
 pub use vec::{Cvec3, Cvec4};
 
