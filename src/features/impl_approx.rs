@@ -34,29 +34,29 @@ trait Components {
 impl Components for Cvec3 {
     type Array = [f32; 3];
     fn components(&self) -> [f32; 3] {
-        [self.x, self.y, self.z]
+        self.to_array()
     }
 }
 
 impl Components for Cvec4 {
     type Array = [f32; 4];
     fn components(&self) -> [f32; 4] {
-        [self.x, self.y, self.z, self.w]
+        self.to_array()
     }
 }
 
 impl Components for Quat {
     type Array = [f32; 4];
     fn components(&self) -> [f32; 4] {
-        [self.w, self.x, self.y, self.z]
+        self.to_array()
     }
 }
 
 impl Components for RigTForm {
     type Array = [f32; 7];
     fn components(&self) -> [f32; 7] {
-        let (t, r) = (self.t, self.r);
-        [t.x, t.y, t.z, r.w, r.x, r.y, r.z]
+        let ([x, y, z], [w, i, j, k]) = (self.t.to_array(), self.r.to_array());
+        [x, y, z, w, i, j, k]
     }
 }
 

@@ -2,7 +2,8 @@
 //! (feature `serde`), derived: each type is written as a struct with the
 //! field names of its Rust definition, so a `Quat` is `{w, x, y, z}`
 //! (scalar first, whatever order the format keeps) and a `Matrix4` is
-//! `{cols: [c0, c1, c2, c3]}`, column-major. The attitude types
+//! `{cols: [c0, c1, c2, c3]}`, column-major; an [`EulerRot`](crate::EulerRot)
+//! is its variant's name (`"ZYX"`). The attitude types
 //! ([`OrientationFilter`](crate::attitude::OrientationFilter) with its
 //! whole state, [`Smoother`](crate::attitude::Smoother),
 //! [`FilterParams`](crate::attitude::FilterParams)) are included, so that a
@@ -24,7 +25,7 @@
 #[cfg(test)]
 mod tests {
     use crate::attitude::{FilterParams, OrientationFilter, Smoother};
-    use crate::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+    use crate::{Cvec3, Cvec4, EulerRot, Matrix4, Quat, RigTForm};
     use serde::{de::DeserializeOwned, Serialize};
 
     /// Writes `value` to JSON, reads it back and returns both.
@@ -57,6 +58,10 @@ mod tests {
         assert_eq!(round_trip(&p).1, p);
         let s = Smoother::new(q, 0.25);
         assert_eq!(round_trip(&s).1, s);
+        for order in EulerRot::ALL {
+            assert_eq!(round_trip(&order).1, order);
+        }
+        assert_eq!(round_trip(&EulerRot::ZYX).0, r#""ZYX""#);
     }
 
     /// The component order is the one of the Rust fields: scalar first for
