@@ -6,8 +6,8 @@
 //! checker can follow, but slowly. So the harnesses replace the kernels
 //! they do not need exactly (`src/stubs.rs`) by "any value that meets the
 //! contract". That is sound only if the real kernels meet the contracts:
-//! `kernels_meet_the_contracts_the_proofs_stub_them_by` in the crate's
-//! `src/float.rs` checks them, with each backend, on edge values and a
+//! `kernels_meet_the_contracts_the_proofs_stub_them_by` in this crate's
+//! `tests/kernel_contracts.rs` checks them, with each backend, on edge values and a
 //! sweep of every binade. The contracts are deliberately weak (ranges and
 //! the Pythagorean identity, not accuracy): what the unit-norm laws need.
 

@@ -2,8 +2,8 @@
 //! under Kani as `rigtform::kani_kernels`) replaced by "any value that
 //! meets the contract" (`src/contracts.rs`), a sound over-approximation as
 //! long as the kernels meet the contracts, which
-//! `kernels_meet_the_contracts_the_proofs_stub_them_by` in `src/float.rs`
-//! checks.
+//! `kernels_meet_the_contracts_the_proofs_stub_them_by` in
+//! `tests/kernel_contracts.rs` checks.
 //!
 //! Compiled only under Kani (`cfg(kani)`), where the `kani` crate exists.
 

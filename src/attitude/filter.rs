@@ -147,6 +147,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OrientationFilter {
     /// The parameters; they may be changed between updates.
     pub params: FilterParams,

@@ -6,6 +6,8 @@
 /// field docs and the README's IMU section), not fitted to any recording.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "bytemuck", derive(bytemuck::Pod, bytemuck::Zeroable))]
 #[repr(C)]
 pub struct FilterParams {
     /// Magnitude of gravity in the accelerometer's unit: 9.81 for m/s²,

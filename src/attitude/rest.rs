@@ -13,6 +13,7 @@ const REST_LOW_PASS_TAU: f32 = 0.5;
 /// lasted `rest_time` (with the thresholds of [`FilterParams`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub(super) struct RestDetector {
     gyro: Cvec3,
     acc: Cvec3,

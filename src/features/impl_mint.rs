@@ -13,6 +13,21 @@
 //! let v: mint::Vector3<f32> = Cvec3::new(1.0, 2.0, 3.0).into();
 //! assert_eq!(Cvec3::from(v), Cvec3::new(1.0, 2.0, 3.0));
 //! ```
+//!
+//! [`mint::IntoMint`] names each type's mint counterpart, for code that is
+//! generic over math libraries: `Cvec3` is a `mint::Vector3` (a point
+//! converts to `mint::Point3` with `From` only), `Cvec4` a `mint::Vector4`,
+//! `Quat` a `mint::Quaternion` and `Matrix4` a `mint::ColumnMatrix4`.
+//! `RigTForm` has no mint counterpart.
+//!
+//! ```
+//! use mint::IntoMint;
+//! fn to_mint<T: IntoMint>(value: T) -> T::MintType {
+//!     value.into()
+//! }
+//! let m = to_mint(rigtform::Quat::IDENTITY);
+//! assert_eq!((m.s, m.v.z), (1.0, 0.0));
+//! ```
 
 use crate::{Cvec3, Cvec4, Matrix4, Quat};
 
@@ -98,6 +113,22 @@ impl From<Matrix4> for mint::ColumnMatrix4<f32> {
     }
 }
 
+impl mint::IntoMint for Cvec3 {
+    type MintType = mint::Vector3<f32>;
+}
+
+impl mint::IntoMint for Cvec4 {
+    type MintType = mint::Vector4<f32>;
+}
+
+impl mint::IntoMint for Quat {
+    type MintType = mint::Quaternion<f32>;
+}
+
+impl mint::IntoMint for Matrix4 {
+    type MintType = mint::ColumnMatrix4<f32>;
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -112,5 +143,22 @@ mod tests {
         assert_eq!(Cvec3::from(p), Cvec3::new(1.0, -2.0, 3.0));
         let v: mint::Vector4<f32> = Cvec4::new(1.0, 2.0, 3.0, 4.0).into();
         assert_eq!(Cvec4::from(v), Cvec4::new(1.0, 2.0, 3.0, 4.0));
+    }
+
+    /// Fails to compile if a type loses `IntoMint`, or names another mint
+    /// type; the conversion it names is the exact one.
+    #[test]
+    fn into_mint_names_each_types_counterpart() {
+        fn via<T: mint::IntoMint>(value: T) -> T::MintType {
+            value.into()
+        }
+        let v: mint::Vector3<f32> = via(Cvec3::new(1.0, 2.0, 3.0));
+        assert_eq!((v.x, v.y, v.z), (1.0, 2.0, 3.0));
+        let v4: mint::Vector4<f32> = via(Cvec4::new(1.0, 2.0, 3.0, 4.0));
+        assert_eq!(v4.w, 4.0);
+        let q: mint::Quaternion<f32> = via(Quat::new(1.0, 2.0, 3.0, 4.0));
+        assert_eq!((q.s, q.v.x, q.v.z), (1.0, 2.0, 4.0));
+        let m: mint::ColumnMatrix4<f32> = via(Matrix4::from_translation(Cvec3::X));
+        assert_eq!(m.w.x, 1.0);
     }
 }

@@ -1,7 +1,13 @@
 //! Optional integrations, one file each.
 
+#[cfg(feature = "approx")]
+mod impl_approx;
+#[cfg(feature = "bytemuck")]
+mod impl_bytemuck;
 #[cfg(feature = "mint")]
 mod impl_mint;
+#[cfg(feature = "serde")]
+mod impl_serde;
 
 #[cfg(all(test, feature = "defmt"))]
 mod defmt_tests {

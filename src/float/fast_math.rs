@@ -1,9 +1,11 @@
 //! The `fast-math` backend: micromath's approximations of atan2, sin, cos
 //! and tan, guarded where micromath breaks down (rescaled arguments, Taylor
-//! terms near zero), and the default kernels where they must answer
-//! instead (zero, huge or non-finite arguments).
+//! terms near zero, IEEE 754's limits of atan2 where an argument is zero
+//! or infinite), and the default sine and cosine kernel where it must
+//! answer instead (huge or non-finite arguments).
 
-use super::atan2::atan2_kernel;
+use super::bits::SIGN;
+use super::head_tail::{PI_HI, PI_LO};
 use super::sin_cos::sin_cos_kernel;
 
 /// 2^-6: below this, the sine and cosine are Taylor polynomials.
@@ -20,9 +22,11 @@ const SIN_COS_LIMIT: f32 = 512.0;
 const ATAN2_HIGH: f32 = f32::from_bits((127 + 20) << 23);
 const ATAN2_LOW: f32 = f32::from_bits((127 - 20) << 23);
 
-/// micromath's atan2 for finite non-zero arguments, the default kernel for
-/// the others (see [`float::atan2`](super::atan2)).
-#[inline]
+/// micromath's atan2 for finite non-zero arguments, [`atan2_limits`] for
+/// the others (see [`float::atan2`](super::atan2)). Never inlined: its
+/// guards at each of the crate's call sites would cost more flash than a
+/// call.
+#[inline(never)]
 pub(super) fn atan2(y: f32, x: f32) -> f32 {
     if y.is_finite() && x.is_finite() && y != 0.0 && x != 0.0 {
         let largest = y.abs().max(x.abs());
@@ -36,7 +40,36 @@ pub(super) fn atan2(y: f32, x: f32) -> f32 {
         // pi/2 or pi, as it should.
         return micromath::F32Ext::atan2(y, x).copysign(y);
     }
-    atan2_kernel(y, x)
+    atan2_limits(y, x)
+}
+
+/// atan2 where an argument is zero, infinite or NaN: IEEE 754's limits
+/// (0, pi/4, pi/2, 3 pi/4 or pi, with the sign of `y`), bit for bit what
+/// the default kernel gives there, without linking that kernel, so that
+/// `fast-math` adds micromath's atan2 instead of keeping both. NaN for NaN.
+#[inline]
+fn atan2_limits(y: f32, x: f32) -> f32 {
+    use core::f32::consts::{FRAC_PI_2, FRAC_PI_4};
+    let (b, a) = (y.abs(), x.abs());
+    // The angle of (a, b) in [0, pi/2]: one of them is 0 or infinite.
+    let phi = if b == 0.0 {
+        0.0
+    } else if b == a {
+        FRAC_PI_4 // both infinite
+    } else if b > a {
+        FRAC_PI_2 // b infinite, or a zero
+    } else {
+        0.0 // a infinite, b finite; or a NaN (then so is the sum below)
+    };
+    let phi = if y.is_nan() || x.is_nan() {
+        f32::NAN
+    } else if x.is_sign_negative() {
+        // As the default kernel rounds pi - phi, from pi's head and tail.
+        PI_HI - (phi - PI_LO)
+    } else {
+        phi
+    };
+    f32::from_bits(phi.to_bits() | (y.to_bits() & SIGN))
 }
 
 /// micromath's sine and cosine, Taylor terms below 2^-6, the default
@@ -70,7 +103,39 @@ pub(super) fn tan(x: f32) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::super::{atan2, sin_cos, tan};
+    use crate::float::atan2::atan2_kernel;
     use crate::float::sweep::spread;
+
+    /// Where an argument is zero, infinite or NaN, `fast-math`'s atan2
+    /// gives the default kernel's bits (NaN for NaN), for every pair of
+    /// these and of finite values of every scale.
+    #[test]
+    fn atan2_limits_are_the_default_kernels_bits() {
+        let limits = [0.0f32, -0.0, f32::INFINITY, f32::NEG_INFINITY, f32::NAN];
+        let finite = [
+            1e-45f32,
+            -1e-45,
+            1e-30,
+            0.5,
+            -1.0,
+            3.0,
+            -1e30,
+            f32::MAX,
+            -f32::MAX,
+        ];
+        for y in limits.into_iter().chain(finite) {
+            for x in limits.into_iter().chain(finite) {
+                if y.is_finite() && x.is_finite() && y != 0.0 && x != 0.0 {
+                    continue;
+                }
+                let (got, want) = (atan2(y, x), atan2_kernel(y, x));
+                assert!(
+                    got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                    "atan2({y:e}, {x:e}) = {got:e}, the default kernel {want:e}"
+                );
+            }
+        }
+    }
 
     /// The feature does what it says: inside their ranges the kernels are
     /// micromath's, bit for bit (the accuracy sweeps alone would also pass

@@ -39,6 +39,7 @@ use crate::float;
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum EulerRot {
     /// Yaw about z, then pitch about the new y, then roll about the newest
     /// x: the aerospace (Tait–Bryan) yaw–pitch–roll of IMUs and aircraft,

@@ -185,11 +185,12 @@ fn markers(elf: &Path) -> Result<Markers> {
 }
 
 /// The flash bytes (text + data, as `llvm-size` counts them) of the size
-/// firmware linking `function` of `embedded/src/ops.rs`, at `opt_level`.
-pub fn flash(llvm_tools: &Path, opt_level: &str, function: &str) -> Result<u64> {
+/// firmware linking `function` of `embedded/src/ops.rs`, at `opt_level`,
+/// built with `features`.
+pub fn flash(llvm_tools: &Path, opt_level: &str, function: &str, features: &str) -> Result<u64> {
     let build = Build {
         bin: "size",
-        features: Some("peers"),
+        features: Some(features),
         env: vec![
             ("RIGTFORM_SIZE_OP", function.to_owned()),
             ("CARGO_PROFILE_RELEASE_OPT_LEVEL", opt_level.to_owned()),

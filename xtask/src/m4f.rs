@@ -40,9 +40,19 @@ pub struct Op {
     pub flash: Option<[u64; 2]>,
 }
 
-/// Every operation's instruction count, from one run of `bin/bench.rs`.
-pub fn counts() -> Result<Vec<Op>> {
-    firmware::count("bench", Some("peers"))?
+/// The features of the bench and size firmware: the peers, and `extra`
+/// (`fast-math` for rigtform's other backend) if given.
+fn bench_features(extra: Option<&str>) -> String {
+    match extra {
+        Some(extra) => format!("peers,{extra}"),
+        None => "peers".into(),
+    }
+}
+
+/// Every operation's instruction count, from one run of `bin/bench.rs`
+/// built with [`bench_features`]`(extra)`.
+pub fn counts(extra: Option<&str>) -> Result<Vec<Op>> {
+    firmware::count("bench", Some(&bench_features(extra)))?
         .into_iter()
         .map(|m| match <[String; 3]>::try_from(m.fields) {
             Ok([operation, library, function]) => Ok(Op {
@@ -79,20 +89,23 @@ fn added_flash(
     opt_level: &str,
     base: u64,
     function: &str,
+    features: &str,
 ) -> Result<u64> {
-    let bytes = firmware::flash(llvm_tools, opt_level, function)?;
+    let bytes = firmware::flash(llvm_tools, opt_level, function, features)?;
     bytes
         .checked_sub(base)
         .with_context(|| format!("{function} is smaller ({bytes}) than {EMPTY_OP} ({base})"))
 }
 
 /// The counts, and the flash of every operation at each opt-level (two
-/// builds per operation, one size build each).
-pub fn with_flash(mut ops: Vec<Op>) -> Result<Vec<Op>> {
+/// builds per operation, one size build each), with the features of
+/// [`bench_features`]`(extra)`.
+pub fn with_flash(mut ops: Vec<Op>, extra: Option<&str>) -> Result<Vec<Op>> {
     let llvm_tools = tools::llvm_tools()?;
+    let features = bench_features(extra);
     let mut flash = vec![[0; 2]; ops.len()];
     for (level, opt_level) in OPT_LEVELS.iter().enumerate() {
-        let base = firmware::flash(&llvm_tools, opt_level, EMPTY_OP)?;
+        let base = firmware::flash(&llvm_tools, opt_level, EMPTY_OP, &features)?;
         for (i, op) in ops.iter().enumerate() {
             say(format!(
                 "flash at opt-level {opt_level:?}: {} of {}, {} ({})",
@@ -101,7 +114,7 @@ pub fn with_flash(mut ops: Vec<Op>) -> Result<Vec<Op>> {
                 op.function,
                 op.operation
             ));
-            flash[i][level] = added_flash(&llvm_tools, opt_level, base, &op.function)?;
+            flash[i][level] = added_flash(&llvm_tools, opt_level, base, &op.function, &features)?;
         }
     }
     for (op, f) in ops.iter_mut().zip(flash) {
@@ -136,7 +149,7 @@ pub fn table(ops: &[Op]) -> String {
 /// opt-level "s"; prints the table and the budget line, and fails if slerp
 /// is over either budget.
 pub fn budget() -> Result<()> {
-    let ops = counts()?;
+    let ops = counts(None)?;
     print!("{}", table(&ops));
     let slerp = ops
         .iter()
@@ -144,8 +157,9 @@ pub fn budget() -> Result<()> {
         .context("the bench announced no slerp of rigtform")?;
     let llvm_tools = tools::llvm_tools()?;
     say(format!("flash of {} at opt-level \"s\"", slerp.function));
-    let base = firmware::flash(&llvm_tools, "s", EMPTY_OP)?;
-    let bytes = added_flash(&llvm_tools, "s", base, &slerp.function)?;
+    let features = bench_features(None);
+    let base = firmware::flash(&llvm_tools, "s", EMPTY_OP, &features)?;
+    let bytes = added_flash(&llvm_tools, "s", base, &slerp.function, &features)?;
     println!("{}", budget_line(slerp.instructions, bytes));
     ensure!(
         slerp.instructions <= SLERP_INSTRUCTIONS && bytes <= SLERP_FLASH,

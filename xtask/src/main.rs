@@ -75,6 +75,10 @@ enum Cmd {
         /// Only the instruction counts, no flash builds
         #[arg(long)]
         count_only: bool,
+        /// rigtform's features besides the peers (`fast-math` for
+        /// micromath's kernels)
+        #[arg(long)]
+        features: Option<String>,
     },
     /// Fails unless slerp keeps to 400 instructions per call and 2048 bytes
     /// of flash at opt-level "s" on the Cortex-M4F
@@ -107,12 +111,15 @@ fn main() -> ExitCode {
 
 fn run(command: Cmd) -> Result<()> {
     match command {
-        Cmd::M4f { count_only } => {
-            let ops = m4f::counts()?;
+        Cmd::M4f {
+            count_only,
+            features,
+        } => {
+            let ops = m4f::counts(features.as_deref())?;
             let ops = if count_only {
                 ops
             } else {
-                m4f::with_flash(ops)?
+                m4f::with_flash(ops, features.as_deref())?
             };
             print!("{}", m4f::table(&ops));
         }

@@ -33,7 +33,7 @@ pub fn perf_report(draws: u64) -> Result<()> {
 
     let host = host_table()?;
     say("Cortex-M4F: instruction counts, then the flash builds");
-    let ops = m4f::with_flash(m4f::counts()?)?;
+    let ops = m4f::with_flash(m4f::counts(None)?, None)?;
     let inputs = m4f::inputs(&ops)?;
     let accurate = accuracy(draws, false)?;
     let accurate_fast = accuracy(draws, true)?;
