@@ -6,6 +6,7 @@ use crate::vec::Cvec3;
 /// A signed coordinate axis of the body (board) frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Axis {
     /// +x
     PosX,
@@ -74,6 +75,7 @@ impl Axis {
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct AxesAlignment {
     /// The body axes of the sensor's x, y and z.
     axes: [Axis; 3],

@@ -98,8 +98,9 @@ pub struct FilterParams {
     /// constant, so that a new environment is accepted in the end (after
     /// about a minute for a field 30 % off; longer the further off it is).
     pub mag_gate: f32,
-    /// The gyro's full scale in rad/s (default infinite: unknown, no
-    /// saturation detected). A reading within 1 % of it on any axis is
+    /// The gyro's full scale in rad/s (default `f32::MAX`: unknown, no
+    /// saturation detected for finite readings; finite so that formats
+    /// without infinity, such as JSON, can store the parameters). A reading within 1 % of it on any axis is
     /// taken as saturated (a sensor at full scale reads its largest code,
     /// which scale calibration may move slightly below the range): the
     /// integrated gyro has lost the true rate, so the filter recovers as at
@@ -133,7 +134,7 @@ impl FilterParams {
         rest_time: 1.5,
         acc_gate: 0.1,
         mag_gate: 0.1,
-        gyro_range: f32::INFINITY,
+        gyro_range: f32::MAX,
     };
 }
 

@@ -1,14 +1,18 @@
 //! `bytemuck::Pod` and `bytemuck::Zeroable` (feature `bytemuck`) for
 //! [`Cvec3`], [`Cvec4`], [`Quat`], [`RigTForm`], [`Matrix4`],
-//! [`Smoother`] and [`FilterParams`]: slices of them cast to bytes or to
-//! `f32`s without a copy, for GPU uploads and wire formats.
+//! [`Smoother`], [`FilterParams`], [`InertialCalibration`] and
+//! [`MagneticCalibration`]: slices of them cast to bytes or to `f32`s
+//! without a copy, for GPU uploads, wire formats and calibration blobs in
+//! flash.
 //!
 //! Each type is `#[repr(C)]` and made only of `f32`s, so its bytes are its
 //! components in field order, without padding: `Quat` is `w, x, y, z`
 //! (scalar first; glam's `Quat` is `x, y, z, w`), `RigTForm` is `t` then
 //! `r` (7 floats), `Matrix4` is 16 floats, column-major.
-//! [`OrientationFilter`](crate::attitude::OrientationFilter) is not `Pod`:
-//! it holds a `bool`.
+//! [`OrientationFilter`](crate::attitude::OrientationFilter) and
+//! [`Diagnostics`](crate::attitude::Diagnostics) are not `Pod`: they hold
+//! `bool`s, as [`AxesAlignment`](crate::attitude::AxesAlignment) holds an
+//! enum.
 //!
 //! # Safety, and the crate's `unsafe` rule
 //!
@@ -33,7 +37,7 @@
 
 #[cfg(test)]
 mod tests {
-    use crate::attitude::{FilterParams, Smoother};
+    use crate::attitude::{FilterParams, InertialCalibration, MagneticCalibration, Smoother};
     use crate::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 
     /// The floats of one value, without a copy (fails to compile if `T`
@@ -67,6 +71,17 @@ mod tests {
         let f = floats(&p);
         assert_eq!((f[0], f[1]), (p.gravity, p.tau_acc));
         assert_eq!(f.len() * 4, core::mem::size_of::<FilterParams>());
+        let mag = MagneticCalibration {
+            hard_iron: Cvec3::new(12.0, -3.0, 40.0),
+            ..MagneticCalibration::IDENTITY
+        };
+        let f = floats(&mag);
+        assert_eq!(
+            (f.len(), f[0], f[4], &f[9..]),
+            (12, 1.0, 1.0, &[12.0, -3.0, 40.0][..])
+        );
+        let gyro = InertialCalibration::IDENTITY;
+        assert_eq!(floats(&gyro).len(), 15);
     }
 
     #[test]
@@ -74,6 +89,7 @@ mod tests {
         assert!(zeroed_bits::<Cvec3>() && zeroed_bits::<Cvec4>() && zeroed_bits::<Quat>());
         assert!(zeroed_bits::<RigTForm>() && zeroed_bits::<Matrix4>());
         assert!(zeroed_bits::<Smoother>() && zeroed_bits::<FilterParams>());
+        assert!(zeroed_bits::<InertialCalibration>() && zeroed_bits::<MagneticCalibration>());
         let q: Quat = bytemuck::Zeroable::zeroed();
         assert_eq!(q, Quat::new(0.0, 0.0, 0.0, 0.0));
     }

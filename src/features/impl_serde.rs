@@ -6,8 +6,14 @@
 //! is its variant's name (`"ZYX"`). The attitude types
 //! ([`OrientationFilter`](crate::attitude::OrientationFilter) with its
 //! whole state, [`Smoother`](crate::attitude::Smoother),
-//! [`FilterParams`](crate::attitude::FilterParams)) are included, so that a
-//! firmware can save a learned gyro bias and restore the filter later.
+//! [`FilterParams`](crate::attitude::FilterParams),
+//! [`Diagnostics`](crate::attitude::Diagnostics), the mounting
+//! [`AxesAlignment`](crate::attitude::AxesAlignment) and its
+//! [`Axis`](crate::attitude::Axis), and the sensor calibrations
+//! [`InertialCalibration`](crate::attitude::InertialCalibration) and
+//! [`MagneticCalibration`](crate::attitude::MagneticCalibration)) are
+//! included, so that a firmware can keep its calibration in a file and
+//! save a learned gyro bias and restore the filter later.
 //!
 //! Deserializing takes the values as they come: a quaternion read from a
 //! file is not normalized, and NaN stays NaN (formats without NaN, such as
@@ -24,7 +30,10 @@
 
 #[cfg(test)]
 mod tests {
-    use crate::attitude::{FilterParams, OrientationFilter, Smoother};
+    use crate::attitude::{
+        AxesAlignment, Axis, FilterParams, InertialCalibration, MagneticCalibration,
+        OrientationFilter, Smoother,
+    };
     use crate::{Cvec3, Cvec4, EulerRot, Matrix4, Quat, RigTForm};
     use serde::{de::DeserializeOwned, Serialize};
 
@@ -62,6 +71,23 @@ mod tests {
             assert_eq!(round_trip(&order).1, order);
         }
         assert_eq!(round_trip(&EulerRot::ZYX).0, r#""ZYX""#);
+        let mounting = AxesAlignment::new(Axis::PosY, Axis::NegX).expect("perpendicular");
+        assert_eq!(round_trip(&mounting).1, mounting);
+        let gyro = InertialCalibration {
+            offset: Cvec3::new(0.01, -0.02, 0.005),
+            ..InertialCalibration::IDENTITY
+        };
+        assert_eq!(round_trip(&gyro).1, gyro);
+        let mag = MagneticCalibration {
+            hard_iron: Cvec3::new(12.0, -3.0, 40.0),
+            ..MagneticCalibration::IDENTITY
+        };
+        assert_eq!(round_trip(&mag).1, mag);
+        let mut filter = OrientationFilter::new(FilterParams::DEFAULT);
+        filter.update(Cvec3::ZERO, Cvec3::ZERO, 0.01);
+        let d = filter.diagnostics();
+        assert!(d.acc_ignored);
+        assert_eq!(round_trip(&d).1, d);
     }
 
     /// The component order is the one of the Rust fields: scalar first for
