@@ -324,7 +324,9 @@ impl Matrix4 {
     /// # Preconditions
     ///
     /// None. `None` when the 3x3 block is singular (a zero scale) or not
-    /// finite, as for [`inverse`](Self::inverse).
+    /// finite, or its entries, minors or `1 / det` beyond the limits of
+    /// [`inverse`](Self::inverse), or an entry of the result would not be
+    /// finite.
     ///
     /// ```
     /// use rigtform::{Cvec3, Matrix4};
@@ -337,19 +339,36 @@ impl Matrix4 {
         let (a, b, c) = (a.xyz(), b.xyz(), c.xyz());
         // The inverse of [a b c] has rows (b x c, c x a, a x b) / det,
         // so its transpose has them as columns.
+        // As in `inverse`, each step is checked before it can overflow:
+        // entries within 2^63 keep the cross products finite, and minors
+        // within 2^62 the determinant.
+        let entries = [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z];
+        if !(a.is_finite() && b.is_finite() && c.is_finite())
+            || largest_magnitude(&entries) > INVERSE_ENTRY_LIMIT
+        {
+            return None;
+        }
         let (bc, ca, ab) = (b.cross(c), c.cross(a), a.cross(b));
+        let minors = [bc, ca, ab].map(|m| largest_magnitude(&[m.x, m.y, m.z]));
+        if largest_magnitude(&minors) > INVERSE_MINOR_LIMIT {
+            return None;
+        }
         let det = a.dot(bc);
-        // As in `inverse`: zero and NaN are caught by the last line.
-        if !det.is_finite() {
+        if det == 0.0 {
             return None;
         }
         let inv_det = 1.0 / det;
+        if !inv_det.is_finite() {
+            return None;
+        }
         let n = Self::from_cols(
             Cvec4::from_vector(bc * inv_det),
             Cvec4::from_vector(ca * inv_det),
             Cvec4::from_vector(ab * inv_det),
             Cvec4::new(0.0, 0.0, 0.0, 1.0),
         );
+        // Each scaled minor is a product of two finite numbers: finite,
+        // or infinite where the normal matrix does not fit.
         n.is_finite().then_some(n)
     }
 
