@@ -238,6 +238,55 @@ fn slerp_is_exact_at_zero() {
     });
 }
 
+/// The short way: `b` and `-b` give one path. Heavy for a solver (two
+/// slerps of symbolic unit inputs, real atan2 and sines); its point is
+/// `cn`, which is exact sign arithmetic.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(not(kani), test)]
+fn slerp_takes_the_short_way() {
+    check("slerp_takes_the_short_way", || {
+        // Preconditions: unit inputs, finite alpha.
+        let (a, b) = (any_unit_quat(), any_unit_quat());
+        let alpha = any_finite();
+        kani::cover!(a.dot(b) < 0.0, "b on the far side");
+        assert_holds(laws::slerp_takes_the_short_way(a, b, alpha));
+    });
+}
+
+/// Constant angular velocity: the turn from `a` is `alpha` times the angle
+/// to `b`. Heavy for a solver (three angles through atan2 and square
+/// roots of symbolic unit inputs): a stand-in test until it is split.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(not(kani), test)]
+fn slerp_turns_by_alpha_times_the_angle() {
+    check("slerp_turns_by_alpha_times_the_angle", || {
+        // Preconditions: unit inputs, alpha in [0, 1].
+        let (a, b) = (any_unit_quat(), any_unit_quat());
+        let alpha = kani::any_where(|t: &f32| (0.0..=1.0).contains(t));
+        assert_holds(laws::slerp_turns_by_alpha_times_the_angle(a, b, alpha));
+    });
+}
+
+/// `pow` turns as the notes define it, against the notes' formula in
+/// `f64` (libm's sines and arctangent): not a proof target (Kani would
+/// have to reason through libm's f64 kernels), a stand-in test only; the
+/// `pow` fuzz target checks the same law.
+#[cfg(all(test, not(kani)))]
+#[test]
+fn pow_turns_as_the_notes_define() {
+    check("pow_turns_as_the_notes_define", || {
+        // Preconditions: finite quaternion, alpha in [-4, 4].
+        let q = any_finite_quat();
+        let alpha = any_within(4.0);
+        kani::cover!(q.w < 0.0, "w < 0");
+        assert_holds(laws::pow_turns_as_the_notes_define(q, alpha));
+    });
+}
+
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
