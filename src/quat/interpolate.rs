@@ -110,7 +110,10 @@ impl Quat {
         // (as `x * 0.0` or `x - x` would from an infinity).
         let n2 = self.norm_squared();
         let on2 = other.norm_squared();
-        if !(n2 + on2 + alpha.abs() <= f32::MAX) {
+        // Written to be true for NaN too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        let not_finite = !(n2 + on2 + alpha.abs() <= f32::MAX);
+        if not_finite {
             return Self::NAN;
         }
         if alpha == 0.0 {
