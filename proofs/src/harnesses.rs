@@ -174,7 +174,13 @@ fn normalize_is_unit_from_subnormal_to_max() {
 fn pow_is_unit_for_every_finite_input() {
     check("pow_is_unit_for_every_finite_input", || {
         // Preconditions: finite quaternion and exponent. No solver bound.
-        let q = any_finite_quat();
+        // A choice Kani explores both ways anyway; for the stand-in, half
+        // the draws are pure real, whose path random bits almost never take.
+        let q = if kani::any() {
+            any_finite_quat()
+        } else {
+            Quat::new(any_finite(), 0.0, 0.0, 0.0)
+        };
         let alpha = any_finite();
         kani::cover!(q.x == 0.0 && q.y == 0.0 && q.z == 0.0, "pure real");
         kani::cover!(alpha.abs() > f32::MAX / 4.0, "fourth power");
