@@ -11,7 +11,7 @@ use rigtform::accuracy::{
     MATRIX_ENTRY_ERROR, MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, POW_MAX_ANGLE_ERROR,
     ROTATE_MAX_REL_ERROR, UNIT_NORM_ERROR,
 };
-use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+use rigtform::{accuracy, Cvec3, Cvec4, EulerRot, Matrix4, Quat, RigTForm};
 use rigtform_proofs::laws::{self, assert_holds};
 use testkit::{max_entry_diff, pow_tol, rig_tform, slerp_tol, unit_quat, vec3};
 
@@ -424,5 +424,100 @@ proptest! {
     #[test]
     fn law_matrix_inverse_is_none_or_finite(bits in prop::array::uniform16(any::<u32>())) {
         assert_holds(laws::matrix_inverse_is_none_or_finite(Matrix4::from_cols_array(&bits.map(f32::from_bits))));
+    }
+}
+
+/// Every Euler order.
+fn euler_order() -> impl Strategy<Value = EulerRot> {
+    prop::sample::select(EulerRot::ALL.to_vec())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn law_euler_angles_give_back_the_rotation(q in unit_quat(), order in euler_order()) {
+        assert_holds(laws::euler_angles_give_back_the_rotation(q, order));
+    }
+
+    #[test]
+    fn law_euler_angles_at_gimbal_lock(a in -PI..PI, c in -PI..PI, up in any::<bool>(), order in euler_order()) {
+        let b = if up { core::f32::consts::FRAC_PI_2 } else { -core::f32::consts::FRAC_PI_2 };
+        assert_holds(laws::euler_angles_give_back_the_rotation(Quat::from_euler(order, a, b, c), order));
+    }
+
+    #[test]
+    fn from_euler_composes_the_axis_rotations_in_order(a in -PI..PI, b in -PI..PI, c in -PI..PI) {
+        let q = Quat::from_euler(EulerRot::ZYX, a, b, c);
+        let by_hand = Quat::from_rotation_z(a) * Quat::from_rotation_y(b) * Quat::from_rotation_x(c);
+        prop_assert!(q.angle_to(by_hand) <= 2.0 * accuracy::EULER_MAX_ANGLE_ERROR + 2.0 * MUL_MAX_ANGLE_ERROR);
+        let q = Quat::from_euler(EulerRot::XZY, a, b, c);
+        let by_hand = Quat::from_rotation_x(a) * Quat::from_rotation_z(b) * Quat::from_rotation_y(c);
+        prop_assert!(q.angle_to(by_hand) <= 2.0 * accuracy::EULER_MAX_ANGLE_ERROR + 2.0 * MUL_MAX_ANGLE_ERROR);
+    }
+
+    #[test]
+    fn law_from_matrix_inverts_from_quat(q in unit_quat()) {
+        assert_holds(laws::from_matrix_inverts_from_quat(q));
+    }
+
+    #[test]
+    fn from_matrix_reads_the_rotation_of_a_rigid_matrix(a in rig_tform()) {
+        let r = Quat::from_matrix(Matrix4::from(a));
+        prop_assert!(r.angle_to(a.r) <= 2.0 * accuracy::FROM_MATRIX_MAX_ANGLE_ERROR + 8.0 * MATRIX_ENTRY_ERROR);
+    }
+
+    #[test]
+    fn law_rotation_arc_takes_from_to_to(a in vec3(), b in vec3(), nudge in vec3(), opposite in any::<bool>()) {
+        prop_assume!(a.norm() > 1e-3 && b.norm() > 1e-3);
+        assert_holds(laws::rotation_arc_takes_from_to_to(a, b));
+        // Nearly the same and nearly opposite directions.
+        let near = a * if opposite { -2.0 } else { 3.0 } + nudge * 1e-6;
+        assert_holds(laws::rotation_arc_takes_from_to_to(a, near));
+    }
+
+    #[test]
+    fn rotation_arc_is_left_invariant_in_its_directions(a in vec3(), b in vec3(), w in unit_quat()) {
+        // Turning both directions by w turns the arc by w: q' = w q w^-1.
+        prop_assume!(a.norm() > 1e-3 && b.norm() > 1e-3);
+        prop_assume!(a.normalize().dot(b.normalize()) > -0.9);
+        let q = Quat::from_rotation_arc(a, b);
+        let turned = Quat::from_rotation_arc(w * a, w * b);
+        prop_assert!(turned.angle_to(w * q * w.inv()) <= 8.0 * accuracy::ROTATION_ARC_MAX_ERROR + 4.0 * ROTATE_MAX_REL_ERROR);
+    }
+
+    #[test]
+    fn look_at_sees_the_target_straight_ahead(eye in vec3(), target in vec3(), up in vec3()) {
+        let sight = target - eye;
+        prop_assume!(sight.norm() > 1e-2 && up.norm() > 1e-3);
+        prop_assume!(up.normalize().cross(sight.normalize()).norm() > 0.1);
+        let e = RigTForm::look_at(eye, target, up);
+        let seen = e.inv().transform_point(target);
+        prop_assert!(close(seen, Cvec3::new(0.0, 0.0, -sight.norm()), 8.0 * ROTATE_MAX_REL_ERROR + 4.0 * accuracy::LOOK_AT_MAX_ANGLE_ERROR));
+        // y is on the side of up, and x is perpendicular to it.
+        let (x, y) = (e.transform_vector(Cvec3::X), e.transform_vector(Cvec3::Y));
+        prop_assert!(y.dot(up) > 0.0);
+        prop_assert!(x.dot(up).abs() <= 4.0 * accuracy::LOOK_AT_MAX_ANGLE_ERROR * up.norm());
+    }
+
+    #[test]
+    fn determinant_is_multiplicative_and_one_for_rigid_motions(a in rig_tform(), s in vec3()) {
+        prop_assume!([s.x, s.y, s.z].iter().all(|c| c.abs() > 1e-2));
+        let m = Matrix4::from(a);
+        let k = Matrix4::from_scale(s);
+        prop_assert!((m.determinant() - 1.0).abs() <= 8.0 * MATRIX_ENTRY_ERROR);
+        let product = (m * k).determinant();
+        let scale = s.x * s.y * s.z;
+        prop_assert!((product - scale).abs() <= 16.0 * MATRIX_ENTRY_ERROR * scale.abs());
+    }
+
+    #[test]
+    fn transform_point_and_vector_match_the_homogeneous_product(a in rig_tform(), b in rig_tform(), c in vec3()) {
+        prop_assert_eq!(a.transform_point(c), (a * Cvec4::from_point(c)).xyz());
+        prop_assert_eq!(a.transform_vector(c), (a * Cvec4::from_vector(c)).xyz());
+        let mut ab = a;
+        ab *= b;
+        prop_assert_eq!(ab, a * b);
+        prop_assert!(close(ab.transform_point(c), a.transform_point(b.transform_point(c)), 4.0 * ROTATE_MAX_REL_ERROR + 2.0 * MUL_MAX_ANGLE_ERROR));
     }
 }

@@ -19,6 +19,12 @@
 use rigtform::accuracy::{INVERSE_MAX_REL_ERROR, ROTATE_MAX_REL_ERROR, UNIT_NORM_ERROR};
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 
+mod constructors;
+pub use constructors::{
+    euler_angles_give_back_the_rotation, from_matrix_inverts_from_quat,
+    rotation_arc_takes_from_to_to,
+};
+
 /// A law that did not hold: its name, the measured quantity and its bound
 /// (both `NaN`-free unless the result itself was `NaN`).
 #[derive(Clone, Copy, Debug, PartialEq)]

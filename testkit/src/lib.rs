@@ -25,7 +25,9 @@ pub mod tolerance;
 pub mod worst;
 
 pub use draws::{draw_count, Draws};
-pub use reference::{angle_error, pow64, rotation_angle64, slerp64, to_f32, to_f64, vec_to_f64};
+pub use reference::{
+    angle_error, euler64, pow64, rotation_angle64, slerp64, to_f32, to_f64, vec_to_f64,
+};
 pub use rigtform_proofs::edge::{edge_quats, finite_edges, EDGE_F32};
 pub use strategies::{rig_tform, unit_quat, vec3};
 pub use tolerance::{max_entry_diff, pow_tol, slerp_tol};
