@@ -4,16 +4,18 @@
 //!
 //! One file per further concept: `quat/power.rs` (the notes' "Power": the
 //! polar form and `pow`), `quat/interpolate.rs` ("to interpolate": `slerp`,
-//! `nlerp`, `blend`) and `quat/exp_log.rs` (the exponential and logarithm
-//! maps, and gyro integration built on them) and `quat/euler.rs` (Euler
-//! angles), `quat/from_matrix.rs` (the rotation of a rotation matrix) and
-//! `quat/rotation_arc.rs` (the shortest rotation between two directions).
+//! `nlerp`, `blend`), `quat/exp_log.rs` (the exponential and logarithm
+//! maps, and gyro integration built on them), `quat/euler.rs` (Euler
+//! angles), `quat/from_matrix.rs` (the rotation of a rotation matrix),
+//! `quat/rotation_arc.rs` (the shortest rotation between two directions)
+//! and `quat/catmull_rom.rs` (splines through many keyframes).
 
 use core::ops::{Mul, MulAssign, Neg};
 
 use crate::float::{self, scale_for_squares};
 use crate::vec::{Cvec3, Cvec4};
 
+pub(crate) mod catmull_rom;
 mod euler;
 mod exp_log;
 mod from_matrix;

@@ -1,13 +1,15 @@
 //! [`RigTForm`]: a rigid body transform kept as a translation and a rotation
 //! quaternion, as in the notes' "Rbt data structure", "rbt * rbt", "inv
 //! operator" and "rbt Interpolation"; `rigtform/look_at.rs` builds an eye
-//! frame from a point and a target.
+//! frame from a point and a target, and `rigtform/catmull_rom.rs` holds
+//! the spline through many keyframes.
 
 use core::ops::{Mul, MulAssign};
 
 use crate::quat::Quat;
 use crate::vec::{Cvec3, Cvec4};
 
+mod catmull_rom;
 mod look_at;
 
 /// A rigid body transform `A = T R`: first rotate by `r`, then translate by

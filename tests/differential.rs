@@ -273,6 +273,24 @@ fn inverse_of_general_matrices_is_within_its_bound() {
 }
 
 #[test]
+fn catmull_rom_is_within_its_bound() {
+    let mut draws = Draws::new(30);
+    let mut angle = Worst::new("Quat::catmull_rom, 5 keys: angle error (rad)");
+    let mut norm = Worst::new("  ... |norm - 1|");
+    for _ in 0..draw_count() {
+        let keys: Vec<Quat> = draws.key_walk(5).iter().map(|k| k.r).collect();
+        let t = draws.uniform(0.0, 4.0) as f32;
+        let got = Quat::catmull_rom(&keys, t);
+        let keys64: Vec<_> = keys.iter().map(|&q| to_f64(q)).collect();
+        let want = testkit::catmull_rom::catmull_rom64(&keys64, t as f64);
+        angle.see(angle_error(got, want), || format!("{keys:?} {t}"));
+        norm.see(norm_error(got), || format!("{keys:?} {t}"));
+    }
+    angle.check(accuracy::CATMULL_ROM_MAX_ANGLE_ERROR);
+    norm.check(accuracy::NORMALIZE_MAX_NORM_ERROR);
+}
+
+#[test]
 fn euler_angles_are_within_their_bound_at_gimbal_lock_too() {
     use core::f64::consts::{FRAC_PI_2, PI};
     let mut draws = Draws::new(8);

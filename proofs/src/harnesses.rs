@@ -373,6 +373,28 @@ fn cn_gives_non_negative_w_and_the_same_rotation() {
     });
 }
 
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(not(kani), test)]
+fn catmull_rom_is_the_key_at_and_beyond_each_key() {
+    check("catmull_rom_is_the_key_at_and_beyond_each_key", || {
+        // No assumption on the keys: every bit pattern. What keeps this
+        // tractable: on this path the spline computes nothing from the
+        // keys (it only picks one), so the solver meets no slerp, power or
+        // kernel, only comparisons of t, its cast to an index and one
+        // exact subtraction (t minus its own whole part); twelve symbolic
+        // components are merely copied.
+        let keys = [any_quat_bits(), any_quat_bits(), any_quat_bits()];
+        // Solver bound: up to three keys, none included.
+        let n = kani::any::<u32>() % 4;
+        let keys = keys.get(..n as usize).unwrap_or(&keys);
+        let t: f32 = kani::any();
+        // Precondition: t NaN, a whole number, or outside (0, n - 1). With
+        // at most three keys, the whole numbers inside are 1 alone.
+        kani::assume(t.is_nan() || t == 1.0 || !(0.0 < t && t < n as f32 - 1.0));
+        assert_holds(laws::catmull_rom_is_the_key_at_and_beyond_each_key(keys, t));
+    });
+}
+
 /// A rigid body transform with a unit rotation and a translation within
 /// 2^20 (solver bound; the laws allow 2^40 or 2^20).
 fn any_rig_tform() -> RigTForm {

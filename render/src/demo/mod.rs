@@ -12,9 +12,12 @@
 //!   slerp against the notes' bad ideas, and in a turned world frame.
 //! - [`interpolation`]: the methods the panels use (the Euler angles are
 //!   the library's `EulerRot::ZYX`).
+//! - [`spline`]: the keyframe comparison of `--spline`, with panels and a
+//!   plot of its own: slerp key to key beside the Catmull-Rom spline.
 
 pub mod bad_ideas;
 pub mod interpolation;
+pub mod spline;
 
 pub use bad_ideas::{keyframes, rotated_world, Comparison, Panel};
 
