@@ -2,11 +2,11 @@
 //! `[x, y, z]`) into each library's types, so that every library gets the
 //! same numbers.
 
-pub fn rig_quat([w, x, y, z]: [f32; 4]) -> rigtform::Quat {
-    rigtform::Quat::new(w, x, y, z)
+pub fn rig_quat(q: [f32; 4]) -> rigtform::Quat {
+    rigtform::Quat::from_array(q)
 }
-pub fn rig_vec([x, y, z]: [f32; 3]) -> rigtform::Cvec3 {
-    rigtform::Cvec3::new(x, y, z)
+pub fn rig_vec(v: [f32; 3]) -> rigtform::Cvec3 {
+    rigtform::Cvec3::from_array(v)
 }
 pub fn rig_tform(t: [f32; 3], r: [f32; 4]) -> rigtform::RigTForm {
     rigtform::RigTForm::new(rig_vec(t), rig_quat(r))
