@@ -49,7 +49,8 @@
 #[cfg(not(kani))]
 use crate::kani_stand_in as kani;
 use crate::laws::{self, assert_holds};
-use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+use core::f32::consts::{FRAC_PI_2, PI};
+use rigtform::{Cvec3, Cvec4, EulerRot, Matrix4, Quat, RigTForm};
 
 /// Runs `body` once under Kani (symbolically: once is all inputs), or on
 /// many random draws under the stand-in.
@@ -663,5 +664,111 @@ fn matrix_inverse_is_none_or_finite() {
         kani::cover!(m.inverse().is_some(), "Some");
         kani::cover!(m.inverse().is_none(), "None");
         assert_holds(laws::matrix_inverse_is_none_or_finite(m));
+    });
+}
+
+/// Any of the six orders of Euler angles.
+fn any_euler_order() -> EulerRot {
+    let i = kani::any::<u32>() % 6;
+    EulerRot::ALL[i as usize]
+}
+
+/// Random test, not a proof target as written: a normalized symbolic
+/// quaternion, two `hypotf`s and three atan2 polynomials one way, and the
+/// sines and cosines of three symbolic angles back.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // the scaled sum of squares over four components
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(not(kani), test)]
+fn euler_angles_give_back_the_rotation() {
+    check("euler_angles_give_back_the_rotation", || {
+        let order = any_euler_order();
+        // Precondition: unit. Half the draws at gimbal lock (b = +-pi/2,
+        // any a and c), which random unit quaternions all but never meet.
+        let q = if kani::any() {
+            any_unit_quat()
+        } else {
+            let lock = if kani::any() { FRAC_PI_2 } else { -FRAC_PI_2 };
+            Quat::from_euler(order, any_within(PI), lock, any_within(PI))
+        };
+        let (_, b, c) = q.to_euler(order);
+        // At the lock to_euler puts the whole turn in a and returns c = 0.
+        kani::cover!(b.abs() == FRAC_PI_2 && c == 0.0, "gimbal lock");
+        kani::cover!(b.abs() < 1.5, "away from the lock");
+        kani::cover!(q.w < 0.0, "w < 0 (cn first)");
+        assert_holds(laws::euler_angles_give_back_the_rotation(q, order));
+    });
+}
+
+/// Random test, not a proof target as written: a normalized symbolic
+/// quaternion, its matrix (products of symbolic components) and Shepperd's
+/// four-way branch and normalization back.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(not(kani), test)]
+fn from_matrix_inverts_from_quat() {
+    check("from_matrix_inverts_from_quat", || {
+        // Precondition: unit. Half the draws are half turns (w = 0), whose
+        // trace is -1, so that x, y or z is the largest of Shepperd's four.
+        let q = if kani::any() {
+            any_unit_quat()
+        } else {
+            let v = any_vec_within(MILLION);
+            // Precondition of normalize_is_unit: not zero.
+            kani::assume(v != Cvec3::ZERO);
+            Quat::new(0.0, v.x, v.y, v.z).normalize()
+        };
+        // The branch from_matrix takes: the largest of four times the
+        // squares of w, x, y and z, read from the matrix as it reads them.
+        let m = Matrix4::from_quat(q).to_cols_array();
+        let (m00, m11, m22) = (m[0], m[5], m[10]);
+        let w4 = 1.0 + m00 + m11 + m22;
+        let x4 = 1.0 + m00 - m11 - m22;
+        let y4 = 1.0 - m00 + m11 - m22;
+        let z4 = 1.0 - m00 - m11 + m22;
+        let w_branch = w4 >= x4 && w4 >= y4 && w4 >= z4;
+        let x_branch = !w_branch && x4 >= y4 && x4 >= z4;
+        let y_branch = !w_branch && !x_branch && y4 >= z4;
+        let z_branch = !w_branch && !x_branch && !y_branch;
+        kani::cover!(w_branch, "w largest");
+        kani::cover!(x_branch && q.w == 0.0, "x largest, half turn");
+        kani::cover!(y_branch && q.w == 0.0, "y largest, half turn");
+        kani::cover!(z_branch && q.w == 0.0, "z largest, half turn");
+        assert_holds(laws::from_matrix_inverts_from_quat(q));
+    });
+}
+
+/// Random test, not a proof target as written: two symbolic directions
+/// normalized (six symbolic divisions), their cross product, and a
+/// normalization or a perpendicular built by another cross product.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // normalize maps over the components
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(not(kani), test)]
+fn rotation_arc_takes_from_to_to() {
+    check("rotation_arc_takes_from_to_to", || {
+        // Solver bound: components within 2^20 (the law allows squared
+        // lengths up to 2^80).
+        let from = any_vec_within(MILLION);
+        // A third of the draws exactly opposite (-2 from, an exact
+        // scaling: the cross product of the two is exactly zero and the
+        // unit directions are negatives of each other to rounding, the
+        // branch of a half turn about a perpendicular axis), a third
+        // nearly opposite (one component nudged), which random directions
+        // all but never are.
+        let to = match kani::any::<u32>() % 3 {
+            0 => any_vec_within(MILLION),
+            1 => from * -2.0,
+            _ => from * -2.0 + Cvec3::new(any_within(1e-3), 0.0, 0.0),
+        };
+        // Precondition: squared lengths in [2^-40, 2^80].
+        let moderate = |v: Cvec3| (9.094_947e-13..=1.208_925_8e24).contains(&v.norm_squared());
+        kani::assume(moderate(from) && moderate(to));
+        let dot = from.dot(to);
+        kani::cover!(from.cross(to) == Cvec3::ZERO && dot < 0.0, "opposite");
+        kani::cover!(from.cross(to) != Cvec3::ZERO && dot < 0.0, "far side");
+        kani::cover!(dot >= 0.0, "near side");
+        assert_holds(laws::rotation_arc_takes_from_to_to(from, to));
     });
 }
