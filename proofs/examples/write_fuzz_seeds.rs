@@ -1,7 +1,15 @@
 //! Writes the fuzz targets' seed corpus (`fuzz/seeds/<target>/`) from the
 //! shared edge values, in the byte layout `arbitrary` reads: each `f32` as
 //! its four little-endian bytes, fields in declaration order, a `bool` as
-//! one byte (odd is true).
+//! one byte (odd is true). It also writes the inputs the fuzzers found
+//! (`fuzz/regressions/<target>/`), which `.ci/run` fuzzes from and
+//! `tests/fuzz_regressions.rs` replays through the targets' laws.
+//!
+//! One quirk of `arbitrary` 1.5: when the last field is an array, its last
+//! element is read again from the bytes after the array (zero if there are
+//! none). The regressions are written with that element in both places, so
+//! that every reading of the file agrees; in the edge seeds it is whatever
+//! follows.
 //!
 //! Run from the repository root: `cargo run -p rigtform-proofs --example write_fuzz_seeds`.
 
@@ -13,8 +21,7 @@ fn bytes(values: &[f32]) -> Vec<u8> {
     values.iter().flat_map(|v| v.to_le_bytes()).collect()
 }
 
-/// Replaces the `edge-*` seeds of `target`; other seeds (the inputs of
-/// regression tests) stay.
+/// Replaces the `edge-*` seeds of `target`; other files stay.
 fn write(target: &str, seeds: Vec<Vec<u8>>) -> std::io::Result<()> {
     let dir = Path::new("fuzz/seeds").join(target);
     fs::create_dir_all(&dir)?;
@@ -33,6 +40,56 @@ fn write(target: &str, seeds: Vec<Vec<u8>>) -> std::io::Result<()> {
     }
     println!("{}: {} seeds", dir.display(), seeds.len());
     Ok(())
+}
+
+/// `values`, then the last of them again: the layout whose every field
+/// `arbitrary` reads as written when the last field is an array.
+fn bytes_with_last_again(values: &[f32]) -> Vec<u8> {
+    let mut all = values.to_vec();
+    all.extend(values.last());
+    bytes(&all)
+}
+
+/// Writes (or rewrites) the named regressions of `target`; other files in
+/// the folder stay.
+fn write_regressions(target: &str, inputs: &[(&str, Vec<u8>)]) -> std::io::Result<()> {
+    let dir = Path::new("fuzz/regressions").join(target);
+    fs::create_dir_all(&dir)?;
+    for (name, input) in inputs {
+        fs::write(dir.join(name), input)?;
+    }
+    println!("{}: {} regressions", dir.display(), inputs.len());
+    Ok(())
+}
+
+/// The inputs the fuzzers found that broke a law once.
+fn regressions() -> std::io::Result<()> {
+    // pow of a huge w beside a vector part below 2^-80, to the power -1e30:
+    // the vector part's scaling overflows w to infinity, phi rounds to 0,
+    // and the result must still be finite and unit (alpha is beyond the
+    // range of the law of the notes' angle).
+    write_regressions(
+        "pow",
+        &[(
+            "huge-w-tiny-vector-alpha-minus-1e30",
+            bytes(&[2.7e10, 1.0e-26, -9.6e-35, 2.5e-30, -1e30]),
+        )],
+    )?;
+    // Rotations exactly pi apart (a . b = 0): either way round is the short
+    // way, at alpha in the middle and extrapolated beyond both ends.
+    let (a, b) = ([1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 1.0]);
+    let c = [0.5, 0.5, 0.5, 0.5];
+    let pair = |alpha: f32| {
+        bytes_with_last_again(&[a.as_slice(), &b, &c, &[alpha, 1.0, 1.0, 1.0]].concat())
+    };
+    write_regressions(
+        "slerp",
+        &[
+            ("pi-apart-half-way", pair(0.5)),
+            ("pi-apart-extrapolated", pair(-0.75)),
+            ("pi-apart-far-extrapolated", pair(1.0e6)),
+        ],
+    )
 }
 
 fn main() -> std::io::Result<()> {
@@ -141,5 +198,5 @@ fn main() -> std::io::Result<()> {
     write("rigtform", rigid)?;
     write("matrix", matrix)?;
     write("constructors", constructors)?;
-    Ok(())
+    regressions()
 }

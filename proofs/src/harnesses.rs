@@ -31,11 +31,17 @@
 //! out for NaN in, exactness at `alpha = 0`, `None` or finite for the
 //! matrix inverse) take paths of comparisons, sign operations and early
 //! returns, with symbolic arithmetic only where a matrix is invertible.
-//! Those that bound an error hand the solver several symbolic divisions,
-//! square roots and polynomials at once; as written they are not expected
-//! to finish within the workflow's per-harness timeout, and until they are
-//! split into small symbolic pieces they are random tests here, not proof
-//! targets.
+//! Three error-bound laws are split for the solver, one harness per
+//! exponent range (`quat_product_multiplies_norms_*`,
+//! `normalize_is_unit_*`, `quat_times_inverse_is_real_*`): one or two
+//! symbolic components built from bits in a fixed exponent range, the
+//! others concrete, nothing assumed, and a comment on each saying what
+//! keeps it small; their full-range versions stay as random tests here.
+//! None of them has been run under Kani, so their tractability is a design
+//! argument, not a measured time. The other harnesses that bound an error
+//! hand the solver several symbolic divisions, square roots and
+//! polynomials at once; each says in one line why, as written, it is a
+//! random test and not a proof target.
 //!
 //! `kani::cover!` marks the branches a law is about; the stand-in fails a
 //! harness whose cover no kept draw met, and prints how many met each.
@@ -43,7 +49,8 @@
 #[cfg(not(kani))]
 use crate::kani_stand_in as kani;
 use crate::laws::{self, assert_holds};
-use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+use core::f32::consts::{FRAC_PI_2, PI};
+use rigtform::{Cvec3, Cvec4, EulerRot, Matrix4, Quat, RigTForm};
 
 /// Runs `body` once under Kani (symbolically: once is all inputs), or on
 /// many random draws under the stand-in.
@@ -109,8 +116,25 @@ const MILLION: f32 = 1_048_576.0;
 /// 2^60: the laws' precondition where a product must stay finite.
 const TWO_TO_60: f32 = 1.152_921_5e18;
 
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(not(kani), test)]
+/// Any `f32` of either sign with magnitude in `[2^lo, 2^(hi + 1))`: a
+/// symbolic sign and mantissa and an exponent among `hi - lo + 1`, built
+/// from bits, so no draw is rejected and no NaN or infinity can appear
+/// (for `-126 <= lo <= hi <= 127`). A biased exponent of 0 (`lo = -127`)
+/// gives zero and the subnormals. The split harnesses below give each
+/// exponent range a harness of its own, so that the solver meets one
+/// binade range at a time.
+fn any_with_exponent_in(lo: i32, hi: i32) -> f32 {
+    let sign_and_mantissa: u32 = kani::any::<u32>() & 0x807f_ffff;
+    let span = u32::try_from(hi - lo + 1).unwrap_or(1);
+    let biased = u32::try_from(lo + 127).unwrap_or(0) + kani::any::<u32>() % span;
+    f32::from_bits(sign_and_mantissa | (biased << 23))
+}
+
+/// Random test, not a proof target: eight unconstrained components, 32
+/// symbolic products and the f64 norms at once. The three harnesses after
+/// it are the law's proof targets.
+#[cfg(all(test, not(kani)))]
+#[test]
 fn quat_product_multiplies_norms() {
     check("quat_product_multiplies_norms", || {
         // Solver bound: components within 2^20 (the law allows 2^40).
@@ -122,6 +146,49 @@ fn quat_product_multiplies_norms() {
     });
 }
 
+/// `|a b| = |a| |b|` with one symbolic component in each factor, its
+/// exponent in `[lo, hi]`, beside three concrete ones. Tractable by
+/// design (not measured: Kani does not run here): of the 16 products in
+/// `a b`, one multiplies two symbolic numbers, the other 15 multiply a
+/// symbolic number by a constant or two constants (which CBMC folds); the
+/// f64 norms square one symbolic number each. The precondition (squared
+/// norms in `[2^-40, 2^80]`) holds by construction, so nothing is assumed.
+fn product_norm_with_exponents_in(name: &str, lo: i32, hi: i32) {
+    check(name, || {
+        let a = Quat::new(any_with_exponent_in(lo, hi), 0.75, -0.5, 0.25);
+        let b = Quat::new(0.5, any_with_exponent_in(lo, hi), 0.25, -0.75);
+        assert_holds(laws::product_norm_is_multiplicative(a, b));
+    });
+}
+
+/// Symbolic components in `[2^-30, 2^-10)`: small beside the constants.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::solver(kissat))]
+#[cfg_attr(not(kani), test)]
+fn quat_product_multiplies_norms_small() {
+    product_norm_with_exponents_in("quat_product_multiplies_norms_small", -30, -11);
+}
+
+/// Symbolic components in `[2^-10, 2^10)`: as large as the constants, where
+/// the products' roundings meet.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::solver(kissat))]
+#[cfg_attr(not(kani), test)]
+fn quat_product_multiplies_norms_moderate() {
+    product_norm_with_exponents_in("quat_product_multiplies_norms_moderate", -10, 9);
+}
+
+/// Symbolic components in `[2^10, 2^30)`: they dominate the norms.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::solver(kissat))]
+#[cfg_attr(not(kani), test)]
+fn quat_product_multiplies_norms_large() {
+    product_norm_with_exponents_in("quat_product_multiplies_norms_large", 10, 29);
+}
+
+/// Random test, not a proof target as written: four unconstrained
+/// components normalized (four symbolic divisions) and a symbolic vector
+/// rotated through 18 products.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -135,10 +202,11 @@ fn quat_rotation_preserves_length() {
     });
 }
 
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
+/// Random test, not a proof target: four unconstrained components, four
+/// symbolic divisions and both rescalings at once. The three harnesses
+/// after it are the law's proof targets, one per branch's range.
+#[cfg(all(test, not(kani)))]
+#[test]
 fn normalize_is_unit_from_subnormal_to_max() {
     check("normalize_is_unit_from_subnormal_to_max", || {
         // Precondition: finite and not zero. No solver bound: normalize's
@@ -156,12 +224,69 @@ fn normalize_is_unit_from_subnormal_to_max() {
     });
 }
 
+/// `normalize` of `(w, x, 0, 0)`: `w` non-zero with its exponent in
+/// `[lo, hi]`, `x` anything from zero up to `w`'s range. Tractable by
+/// design (not measured): two symbolic components, two concrete zeros
+/// (their squares and quotients fold), the square root stubbed by its
+/// contract, and an exponent range that fixes which branch of
+/// `scale_for_squares` runs, up to the rounding of one sum at its edge.
+/// Zero and non-zero are decided by construction: nothing is assumed.
+fn normalize_with_exponents_in(name: &str, lo: i32, hi: i32) {
+    check(name, || {
+        let q = Quat::new(
+            any_with_exponent_in(lo, hi),
+            any_with_exponent_in(-127, hi),
+            0.0,
+            0.0,
+        );
+        kani::cover!(q.x.abs() < f32::MIN_POSITIVE, "x zero or subnormal");
+        assert_holds(laws::normalize_is_unit(q));
+    });
+}
+
+/// `w` in `[2^-126, 2^-50)`: the squares underflow and the components are
+/// scaled up by 2^100 (a sum just below 2^-100 may round up to it and
+/// take the common path).
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(kani, kani::solver(kissat))]
+#[cfg_attr(not(kani), test)]
+fn normalize_is_unit_scaled_up() {
+    normalize_with_exponents_in("normalize_is_unit_scaled_up", -126, -51);
+}
+
+/// `w` in `[2^-50, 2^63)`, `x` below 2^63: the common path, no scaling.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(kani, kani::solver(kissat))]
+#[cfg_attr(not(kani), test)]
+fn normalize_is_unit_unscaled() {
+    normalize_with_exponents_in("normalize_is_unit_unscaled", -50, 62);
+}
+
+/// `w` in `[2^63, f32::MAX]`: the squares overflow and the components are
+/// scaled down by 2^-66.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(kani, kani::solver(kissat))]
+#[cfg_attr(not(kani), test)]
+fn normalize_is_unit_scaled_down() {
+    normalize_with_exponents_in("normalize_is_unit_scaled_down", 63, 127);
+}
+
 /// The norm of `pow` on every finite input: zero, subnormal and huge vector
 /// parts, `w = +-1`, `w = 0`, non-unit inputs, any finite `alpha`. With
 /// atan2, sine and cosine stubbed by contracts that ignore their argument's
 /// value, this covers no atan2 edge case and says nothing about the angle:
 /// only that any kernels meeting the contracts give a unit result. The
 /// angle is `pow_turns_as_the_notes_define`'s (stand-in and fuzz target).
+///
+/// Random test, not a proof target as written: four unconstrained
+/// components, the scaled sum of squares, divisions and the stubbed
+/// kernels' contracts (f64 polynomials of symbolic outputs) at once.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))] // scaled sums of squares over four components
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -223,6 +348,10 @@ fn slerp_of_non_finite_input_is_nan() {
 /// Identical, nearly identical, antipodal and opposite pairs are all among
 /// the inputs. The real sine and atan2 kernels: the norm depends on their
 /// accuracy.
+///
+/// Random test, not a proof target as written: two normalized symbolic
+/// quaternions, the real atan2 and sine polynomials and, beyond 3 pi/4, a
+/// branching reduction in integers.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -266,6 +395,9 @@ fn slerp_is_exact_at_zero() {
 /// The short way: `b` and `-b` give one path. Heavy for a solver (two
 /// slerps of symbolic unit inputs, real atan2 and sines); its point is
 /// `cn`, which is exact sign arithmetic.
+///
+/// Random test, not a proof target as written: two slerps of two normalized
+/// symbolic quaternions with the real kernels.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -283,6 +415,10 @@ fn slerp_takes_the_short_way() {
 /// Constant angular velocity: the turn from `a` is `alpha` times the angle
 /// to `b`. Heavy for a solver (three angles through atan2 and square
 /// roots of symbolic unit inputs): a stand-in test until it is split.
+///
+/// Random test, not a proof target as written: three angles through the
+/// real atan2 and stubbed square roots of two normalized symbolic
+/// quaternions.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -312,6 +448,8 @@ fn pow_turns_as_the_notes_define() {
     });
 }
 
+/// Random test, not a proof target as written: two normalized symbolic
+/// quaternions, their weighted sum and a third normalization.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -325,6 +463,8 @@ fn nlerp_is_unit() {
     });
 }
 
+/// Random test, not a proof target as written: three normalized symbolic
+/// quaternions, three symbolic weights and a normalization of their sum.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))] // three entries, and normalize's four components
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -353,14 +493,60 @@ fn quat_inverse_is_an_involution() {
     });
 }
 
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(not(kani), test)]
+/// Random test, not a proof target: four unconstrained components within
+/// 2^60 and their 16 products at once. The three harnesses after it are
+/// the law's proof targets.
+#[cfg(all(test, not(kani)))]
+#[test]
 fn quat_times_inverse_is_real() {
     check("quat_times_inverse_is_real", || {
         // Precondition: components within 2^60 (no overflow).
         let q = any_quat_within(TWO_TO_60);
         assert_holds(laws::product_with_inverse_is_real(q));
     });
+}
+
+/// `q q^-1` for `q = (w, x, 0.375, -1.25)`, `w` and `x` with exponents in
+/// `[lo, hi]`. Tractable by design (not measured): two symbolic
+/// components; `q^-1` only flips signs (exact); of the 16 products in
+/// `q q^-1`, four multiply two symbolic numbers and the rest a symbolic
+/// number by a constant or two constants; the law squares in f64 what
+/// comes out, with no division and no square root. The precondition
+/// (components within 2^60) holds by construction.
+fn product_with_inverse_with_exponents_in(name: &str, lo: i32, hi: i32) {
+    check(name, || {
+        let q = Quat::new(
+            any_with_exponent_in(lo, hi),
+            any_with_exponent_in(lo, hi),
+            0.375,
+            -1.25,
+        );
+        assert_holds(laws::product_with_inverse_is_real(q));
+    });
+}
+
+/// `w`, `x` in `[2^-60, 2^-20)`: the constants carry the norm.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::solver(kissat))]
+#[cfg_attr(not(kani), test)]
+fn quat_times_inverse_is_real_small() {
+    product_with_inverse_with_exponents_in("quat_times_inverse_is_real_small", -60, -21);
+}
+
+/// `w`, `x` in `[2^-20, 2^20)`: every component counts.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::solver(kissat))]
+#[cfg_attr(not(kani), test)]
+fn quat_times_inverse_is_real_moderate() {
+    product_with_inverse_with_exponents_in("quat_times_inverse_is_real_moderate", -20, 19);
+}
+
+/// `w`, `x` in `[2^20, 2^60)`: the constants round away.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::solver(kissat))]
+#[cfg_attr(not(kani), test)]
+fn quat_times_inverse_is_real_large() {
+    product_with_inverse_with_exponents_in("quat_times_inverse_is_real_large", 20, 59);
 }
 
 #[cfg_attr(kani, kani::proof)]
@@ -401,6 +587,8 @@ fn any_rig_tform() -> RigTForm {
     RigTForm::new(any_vec_within(MILLION), any_unit_quat())
 }
 
+/// Random test, not a proof target as written: a normalized symbolic
+/// rotation and a symbolic translation rotated twice.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -411,6 +599,8 @@ fn rigtform_times_inverse_is_identity() {
     });
 }
 
+/// Random test, not a proof target as written: a normalized symbolic
+/// rotation and a symbolic translation rotated twice.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -421,6 +611,9 @@ fn rigtform_inverse_is_an_involution() {
     });
 }
 
+/// Random test, not a proof target as written: a normalized symbolic
+/// rotation, its matrix and the general matrix inverse (cofactors and a
+/// division).
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(17))] // the law compares 16 matrix entries
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -431,6 +624,8 @@ fn rigtform_inverse_agrees_with_matrix_inverse() {
     });
 }
 
+/// Random test, not a proof target as written: a normalized symbolic
+/// rotation, its matrix and a symbolic vector moved both ways.
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -469,5 +664,111 @@ fn matrix_inverse_is_none_or_finite() {
         kani::cover!(m.inverse().is_some(), "Some");
         kani::cover!(m.inverse().is_none(), "None");
         assert_holds(laws::matrix_inverse_is_none_or_finite(m));
+    });
+}
+
+/// Any of the six orders of Euler angles.
+fn any_euler_order() -> EulerRot {
+    let i = kani::any::<u32>() % 6;
+    EulerRot::ALL[i as usize]
+}
+
+/// Random test, not a proof target as written: a normalized symbolic
+/// quaternion, two `hypotf`s and three atan2 polynomials one way, and the
+/// sines and cosines of three symbolic angles back.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // the scaled sum of squares over four components
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(not(kani), test)]
+fn euler_angles_give_back_the_rotation() {
+    check("euler_angles_give_back_the_rotation", || {
+        let order = any_euler_order();
+        // Precondition: unit. Half the draws at gimbal lock (b = +-pi/2,
+        // any a and c), which random unit quaternions all but never meet.
+        let q = if kani::any() {
+            any_unit_quat()
+        } else {
+            let lock = if kani::any() { FRAC_PI_2 } else { -FRAC_PI_2 };
+            Quat::from_euler(order, any_within(PI), lock, any_within(PI))
+        };
+        let (_, b, c) = q.to_euler(order);
+        // At the lock to_euler puts the whole turn in a and returns c = 0.
+        kani::cover!(b.abs() == FRAC_PI_2 && c == 0.0, "gimbal lock");
+        kani::cover!(b.abs() < 1.5, "away from the lock");
+        kani::cover!(q.w < 0.0, "w < 0 (cn first)");
+        assert_holds(laws::euler_angles_give_back_the_rotation(q, order));
+    });
+}
+
+/// Random test, not a proof target as written: a normalized symbolic
+/// quaternion, its matrix (products of symbolic components) and Shepperd's
+/// four-way branch and normalization back.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(not(kani), test)]
+fn from_matrix_inverts_from_quat() {
+    check("from_matrix_inverts_from_quat", || {
+        // Precondition: unit. Half the draws are half turns (w = 0), whose
+        // trace is -1, so that x, y or z is the largest of Shepperd's four.
+        let q = if kani::any() {
+            any_unit_quat()
+        } else {
+            let v = any_vec_within(MILLION);
+            // Precondition of normalize_is_unit: not zero.
+            kani::assume(v != Cvec3::ZERO);
+            Quat::new(0.0, v.x, v.y, v.z).normalize()
+        };
+        // The branch from_matrix takes: the largest of four times the
+        // squares of w, x, y and z, read from the matrix as it reads them.
+        let m = Matrix4::from_quat(q).to_cols_array();
+        let (m00, m11, m22) = (m[0], m[5], m[10]);
+        let w4 = 1.0 + m00 + m11 + m22;
+        let x4 = 1.0 + m00 - m11 - m22;
+        let y4 = 1.0 - m00 + m11 - m22;
+        let z4 = 1.0 - m00 - m11 + m22;
+        let w_branch = w4 >= x4 && w4 >= y4 && w4 >= z4;
+        let x_branch = !w_branch && x4 >= y4 && x4 >= z4;
+        let y_branch = !w_branch && !x_branch && y4 >= z4;
+        let z_branch = !w_branch && !x_branch && !y_branch;
+        kani::cover!(w_branch, "w largest");
+        kani::cover!(x_branch && q.w == 0.0, "x largest, half turn");
+        kani::cover!(y_branch && q.w == 0.0, "y largest, half turn");
+        kani::cover!(z_branch && q.w == 0.0, "z largest, half turn");
+        assert_holds(laws::from_matrix_inverts_from_quat(q));
+    });
+}
+
+/// Random test, not a proof target as written: two symbolic directions
+/// normalized (six symbolic divisions), their cross product, and a
+/// normalization or a perpendicular built by another cross product.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))] // normalize maps over the components
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(not(kani), test)]
+fn rotation_arc_takes_from_to_to() {
+    check("rotation_arc_takes_from_to_to", || {
+        // Solver bound: components within 2^20 (the law allows squared
+        // lengths up to 2^80).
+        let from = any_vec_within(MILLION);
+        // A third of the draws exactly opposite (-2 from, an exact
+        // scaling: the cross product of the two is exactly zero and the
+        // unit directions are negatives of each other to rounding, the
+        // branch of a half turn about a perpendicular axis), a third
+        // nearly opposite (one component nudged), which random directions
+        // all but never are.
+        let to = match kani::any::<u32>() % 3 {
+            0 => any_vec_within(MILLION),
+            1 => from * -2.0,
+            _ => from * -2.0 + Cvec3::new(any_within(1e-3), 0.0, 0.0),
+        };
+        // Precondition: squared lengths in [2^-40, 2^80].
+        let moderate = |v: Cvec3| (9.094_947e-13..=1.208_925_8e24).contains(&v.norm_squared());
+        kani::assume(moderate(from) && moderate(to));
+        let dot = from.dot(to);
+        kani::cover!(from.cross(to) == Cvec3::ZERO && dot < 0.0, "opposite");
+        kani::cover!(from.cross(to) != Cvec3::ZERO && dot < 0.0, "far side");
+        kani::cover!(dot >= 0.0, "near side");
+        assert_holds(laws::rotation_arc_takes_from_to_to(from, to));
     });
 }

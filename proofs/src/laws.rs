@@ -68,7 +68,10 @@ pub fn assert_holds(verdict: Verdict) {
 /// products, and the vector of their absolute sums has norm at most
 /// `2 |a| |b|`), so `|norm^2 - 1| <= 16u = 9.5e-7`; `pow` adds sine and
 /// cosine errors (`3 SIN_COS_MAX_ABS_ERROR`) to the normalized axis (`8u`):
-/// 6.6e-7. Both are below 4 x 3.2e-7 = 1.28e-6. With `fast-math` the bound
+/// 6.6e-7. Both are below 4 x 3.2e-7 = 1.28e-6, and so is `pow` under the
+/// Kani stubs, whose sines may be off the unit circle by the whole
+/// [`PYTHAGORAS_TOL`](crate::contracts::PYTHAGORAS_TOL) (4.5e-7, from the
+/// kernel's ulp bound): 9.3e-7. With `fast-math` the bound
 /// follows its `UNIT_NORM_ERROR` (5e-3).
 pub const ONE_STEP_NORM_TOL: f64 = 4.0 * UNIT_NORM_ERROR as f64;
 

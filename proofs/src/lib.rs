@@ -28,6 +28,7 @@
 pub mod contracts;
 pub mod draw;
 pub mod edge;
+pub mod fuzz_laws;
 pub mod laws;
 pub mod reference;
 
