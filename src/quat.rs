@@ -15,6 +15,7 @@ use crate::vec::{Cvec3, Cvec4};
 mod exp_log;
 mod interpolate;
 mod power;
+mod slerp_slice;
 
 use power::Polar;
 

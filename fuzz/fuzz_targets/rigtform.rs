@@ -1,7 +1,7 @@
 //! `RigTForm` on raw bit patterns: product with the inverse, inverse of the
 //! inverse, agreement with `Matrix4::inverse` and with the matrix's action
-//! on points and vectors, interpolation exact at zero, and no panic on
-//! anything.
+//! on points and vectors, interpolation exact at zero, `interpolate_slice`
+//! equal to `interpolate` bit for bit, and no panic on anything.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -47,6 +47,11 @@ fuzz_target!(|input: Input| {
     // No panic on anything.
     let _ = (a * b, a.inv(), a.interpolate(b, input.alpha), a * c);
     let _ = Matrix4::from(a).inverse();
+    assert_holds(laws::interpolate_slice_is_interpolate_bit_for_bit(
+        &[a, b, a],
+        &[b, a, a],
+        input.alpha,
+    ));
 
     let zero = Quat::new(0.0, 0.0, 0.0, 0.0);
     if !(a.r.is_finite() && a.r != zero && within_limit(a.t) && within_limit(b.t)) {

@@ -1,7 +1,8 @@
-//! `slerp`, `nlerp` and `blend` on raw bit patterns (contract item 3):
-//! unit results for unit inputs and every finite alpha, exactness at
-//! alpha = 0, the short way at constant angular velocity, NaN out for NaN
-//! in, and no panic on anything.
+//! `slerp`, `nlerp`, `blend` and `slerp_slice` on raw bit patterns
+//! (contract item 3): unit results for unit inputs and every finite alpha,
+//! exactness at alpha = 0, the short way at constant angular velocity, NaN
+//! out for NaN in, the slice equal to slerp bit for bit, and no panic on
+//! anything.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -46,6 +47,12 @@ fuzz_target!(|input: Input| {
         (c, input.weights[2]),
     ];
     let _ = Quat::blend(&entries);
+    // The raw inputs, their normalized versions and the edge pairs, side by
+    // side in one slice.
+    let units = [unit(a), unit(b), unit(c)].map(|u| u.unwrap_or(Quat::IDENTITY));
+    let starts = [a, b, c, units[0], units[0], units[0], units[1]];
+    let ends = [b, c, a, units[1], units[0], -units[0], units[2]];
+    assert_holds(laws::slerp_slice_is_slerp_bit_for_bit(&starts, &ends, alpha));
     if !(a.is_finite() && b.is_finite() && alpha.is_finite()) {
         assert_holds(laws::slerp_of_non_finite_is_nan(a, b, alpha));
     }

@@ -423,6 +423,55 @@ pub fn interpolate_is_exact_at_zero(a: RigTForm, b: RigTForm) -> Verdict {
     yes_or_no("interpolate_is_exact_at_zero", a.interpolate(b, 0.0) == a)
 }
 
+/// `Quat::slerp_slice` is `slerp` element by element, bit for bit (NaN
+/// results included), for any input bits and any `alpha`; and slices of
+/// different lengths write the shortest length, leaving the rest of `out`
+/// as it was.
+///
+/// Preconditions: none.
+pub fn slerp_slice_is_slerp_bit_for_bit<const N: usize>(
+    starts: &[Quat; N],
+    ends: &[Quat; N],
+    alpha: f32,
+) -> Verdict {
+    let mut out = [Quat::NAN; N];
+    Quat::slerp_slice(starts, ends, alpha, &mut out);
+    let same = starts
+        .iter()
+        .zip(ends)
+        .zip(&out)
+        .all(|((&a, &b), &o)| same_bits(o, a.slerp(b, alpha)));
+    yes_or_no("slerp_slice_is_slerp_bit_for_bit", same)?;
+    // One start fewer: the last element of out is not written.
+    let mut short = [Quat::NAN; N];
+    let fewer = starts.split_last().map_or(&[][..], |(_, rest)| rest);
+    Quat::slerp_slice(fewer, ends, alpha, &mut short);
+    let kept = short.last().is_none_or(|&q| same_bits(q, Quat::NAN));
+    let written = fewer.iter().zip(&out).zip(&short);
+    let same = written.clone().all(|((_, &o), &s)| same_bits(o, s));
+    yes_or_no("slerp_slice_is_slerp_bit_for_bit (shorter)", same && kept)
+}
+
+/// `RigTForm::interpolate_slice` is `interpolate` element by element, bit
+/// for bit (NaN results included), for any input bits and any `alpha`.
+///
+/// Preconditions: none.
+pub fn interpolate_slice_is_interpolate_bit_for_bit<const N: usize>(
+    starts: &[RigTForm; N],
+    ends: &[RigTForm; N],
+    alpha: f32,
+) -> Verdict {
+    let mut out = [RigTForm::IDENTITY; N];
+    RigTForm::interpolate_slice(starts, ends, alpha, &mut out);
+    let bits = |a: RigTForm| [a.t.x, a.t.y, a.t.z, a.r.w, a.r.x, a.r.y, a.r.z].map(f32::to_bits);
+    let same = starts
+        .iter()
+        .zip(ends)
+        .zip(&out)
+        .all(|((&a, &b), &o)| bits(o) == bits(a.interpolate(b, alpha)));
+    yes_or_no("interpolate_slice_is_interpolate_bit_for_bit", same)
+}
+
 /// `Matrix4::inverse` and `normal_matrix` give `None` or finite entries,
 /// for any input bits, never a panic; a normal matrix has no translation.
 ///

@@ -6,7 +6,7 @@ pub(crate) const SIGN: u32 = 0x8000_0000;
 /// `if c { a } else { b }`, by bit masks: no branch for the data to
 /// mispredict (both values are computed anyway).
 #[inline]
-pub(super) fn select(c: bool, a: f32, b: f32) -> f32 {
+pub(crate) fn select(c: bool, a: f32, b: f32) -> f32 {
     let mask = u32::from(c).wrapping_neg();
     f32::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))
 }
