@@ -70,16 +70,16 @@ impl Quat {
 mod lanes {
     use super::super::interpolate::{NEARLY_UNIT, SMALL_ANGLE};
     use super::Quat;
-    use crate::float::{self, select, sqrt_by_newton, sum_of_squares, SIGN, SQUARES_UNDERFLOW};
+    use crate::float::{self, select, sqrt_by_newton, sum_of_squares, SQUARES_UNDERFLOW};
 
     /// Pairs per block: the flags of a block live on the stack.
     const BLOCK: usize = 64;
 
-    /// The bits of 2^16, the largest magnitude of a component the lanes
+    /// 2^16, the largest magnitude of a component the lanes
     /// take: the products and sums of squares below stay far from
     /// overflow (at most 2^104), so no operation makes an infinity, and
     /// none a NaN.
-    const LANE_LIMIT_BITS: u32 = 0x4780_0000;
+    const LANE_LIMIT: f32 = 65_536.0;
 
     /// [`Quat::slerp_slice`] for `alpha` in (0, 1].
     pub(super) fn slerp_in_blocks(starts: &[Quat], ends: &[Quat], alpha: f32, out: &mut [Quat]) {
@@ -110,10 +110,13 @@ mod lanes {
     fn in_plane(a: Quat, b: Quat, alpha: f32) -> (Quat, bool) {
         // Out-of-range components (NaN and infinities among them) are
         // replaced before any arithmetic; their pair goes to slerp.
-        let largest = [a.w, a.x, a.y, a.z, b.w, b.x, b.y, b.z]
-            .iter()
-            .fold(0, |m, c| m.max(c.to_bits() & !SIGN));
-        let bounded = largest <= LANE_LIMIT_BITS;
+        let within = |q: Quat| {
+            (q.w.abs() <= LANE_LIMIT)
+                & (q.x.abs() <= LANE_LIMIT)
+                & (q.y.abs() <= LANE_LIMIT)
+                & (q.z.abs() <= LANE_LIMIT)
+        };
+        let bounded = within(a) & within(b);
         let a = a.map(|c| select(bounded, c, 1.0));
         let b = b.map(|c| select(bounded, c, 1.0));
 
