@@ -7,7 +7,8 @@
 //! input slice is hidden behind `black_box` (nothing is known about it at
 //! compile time) and so is every result (nothing is vectorized across
 //! inputs or left out); criterion reports the time per iteration, and the
-//! README's table divides its median by 1,024.
+//! performance page's table (docs/performance.md) divides its median by
+//! 1,024.
 //!
 //! The two slice benchmarks (`slerp slice`, `RigTForm interpolate slice`)
 //! time rigtform's slice APIs over all 1,024 pairs with one `alpha` against
@@ -304,7 +305,7 @@ fn quat_ops(c: &mut Criterion) {
     if !cfg!(feature = "fast-math") {
         peers(jobs, &inp);
     }
-    // Operation by operation, in the order of the README's table (a stable
+    // Operation by operation, in the order of the performance page's table (a stable
     // sort keeps rigtform first within each).
     jobs.sort_by_key(|&(op, _)| OPS.iter().position(|&o| o == op));
     for (_, job) in jobs.iter() {
@@ -313,7 +314,7 @@ fn quat_ops(c: &mut Criterion) {
 }
 
 /// The operations, in the order they are run and tabulated (`cargo xtask
-/// perf-report` takes the README table's rows in the order `--list` prints
+/// perf-report` takes the performance page's rows in the order `--list` prints
 /// them).
 const OPS: [&str; 18] = [
     "q*q",

@@ -13,13 +13,13 @@
 //!   and 2048 bytes. CI runs it.
 //! - `cargo xtask filter-cost [--features fast-math]`: instructions per
 //!   call of the attitude updates (`embedded/src/bin/filter_cost.rs`).
-//! - `cargo xtask perf-report [--draws N]`: the README's Performance
-//!   tables: criterion's medians on the host (`cargo bench -p
+//! - `cargo xtask perf-report [--draws N]`: the tables of the performance
+//!   page, `docs/performance.md`: criterion's medians on the host (`cargo bench -p
 //!   rigtform-compare --bench ops`, then rigtform's functions with
 //!   `fast-math`), the Cortex-M4F table, and the accuracy report on
 //!   1,000,000 draws per class with each backend; written between the
-//!   README's `perf-report` markers, the README replaced only when all of
-//!   it succeeded.
+//!   page's `perf-report` markers, the page replaced only when all of it
+//!   succeeded.
 //!
 //! How an instruction count is made: the firmware (`embedded/src/bin/`)
 //! calls the two marker functions of `embedded/src/measure.rs` around each
@@ -41,7 +41,7 @@
 mod criterion;
 mod firmware;
 mod m4f;
-mod readme;
+mod page;
 mod report;
 mod tools;
 mod trace;
@@ -83,7 +83,7 @@ enum Cmd {
         #[arg(long)]
         features: Option<String>,
     },
-    /// Regenerates the README's Performance tables (about 10 minutes)
+    /// Regenerates the tables of docs/performance.md (about 10 minutes)
     PerfReport {
         /// Draws per class of the accuracy report
         #[arg(long, default_value_t = 1_000_000)]
