@@ -37,12 +37,25 @@ mod sqrt;
 #[cfg(test)]
 mod sweep;
 
-pub(crate) use bits::{select, SIGN};
-pub(crate) use norm::{scale_for_squares, sum_of_squares, ScaledSquares, SQUARES_UNDERFLOW};
+pub(crate) use bits::SIGN;
+pub(crate) use norm::{scale_for_squares, ScaledSquares};
 pub(crate) use sin_cos::sin3;
 pub use sqrt::sqrt;
-#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+#[cfg(all(
+    any(target_arch = "x86_64", target_arch = "aarch64"),
+    not(feature = "fast-math")
+))]
 pub(crate) use sqrt::sqrt_by_newton;
+/// What the vectorizable lanes of `Quat::slerp_slice` share with the single
+/// call.
+#[cfg(all(
+    any(target_arch = "x86_64", target_arch = "aarch64"),
+    not(feature = "fast-math")
+))]
+pub(crate) use {
+    bits::select,
+    norm::{sum_of_squares, SQUARES_UNDERFLOW},
+};
 
 /// Four-quadrant arctangent of `y / x`, in [-pi, pi], with IEEE 754's
 /// results for zeros and infinities (`atan2(+-0, -0) = +-pi`,

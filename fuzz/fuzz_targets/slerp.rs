@@ -52,7 +52,9 @@ fuzz_target!(|input: Input| {
     let units = [unit(a), unit(b), unit(c)].map(|u| u.unwrap_or(Quat::IDENTITY));
     let starts = [a, b, c, units[0], units[0], units[0], units[1]];
     let ends = [b, c, a, units[1], units[0], -units[0], units[2]];
-    assert_holds(laws::slerp_slice_is_slerp_bit_for_bit(&starts, &ends, alpha));
+    assert_holds(laws::slerp_slice_is_slerp_bit_for_bit(
+        &starts, &ends, alpha,
+    ));
     if !(a.is_finite() && b.is_finite() && alpha.is_finite()) {
         assert_holds(laws::slerp_of_non_finite_is_nan(a, b, alpha));
     }

@@ -57,6 +57,9 @@ pub fn sqrt(x: f32) -> f32 {
 /// with [`sqrt`] bit for bit on every 997th f32, and the ignored
 /// `sqrt_by_newton_exhaustive_kernel_sweep` on every f32 of [0, f32::MAX].
 #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+// With fast-math, slerp_slice is a loop of slerp and this goes unused
+// (its tests still check it).
+#[cfg_attr(feature = "fast-math", allow(dead_code))]
 #[inline(always)]
 #[must_use]
 pub(crate) fn sqrt_by_newton(x: f32) -> f32 {
