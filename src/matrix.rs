@@ -9,6 +9,20 @@ use crate::quat::Quat;
 use crate::rigtform::RigTForm;
 use crate::vec::{Cvec3, Cvec4};
 
+/// 2^63: the largest entry [`Matrix4::inverse`] takes.
+const INVERSE_ENTRY_LIMIT: f32 = 9.223_372e18;
+/// 2^62: the largest 2x2 minor of the columns [`Matrix4::inverse`] takes.
+const INVERSE_MINOR_LIMIT: f32 = 4.611_686e18;
+/// 2^125: the largest product of an entry and a minor over the
+/// determinant that [`Matrix4::inverse`] takes.
+const INVERSE_PRODUCT_LIMIT: f32 = 4.253_529_6e37;
+
+/// The largest `|x|` of finite `values` (0 for none), by comparisons
+/// only.
+fn largest_magnitude(values: &[f32]) -> f32 {
+    values.iter().fold(0.0, |m: f32, v| m.max(v.abs()))
+}
+
 /// A 4x4 matrix in OpenGL conventions: column vectors (`m * v`), stored
 /// column-major, so [`to_cols_array`](Self::to_cols_array) can go straight to
 /// `glUniformMatrix4fv` with `transpose = false`.
@@ -220,11 +234,14 @@ impl Matrix4 {
     ///
     /// # Preconditions
     ///
-    /// None. Returns `None` when the determinant is zero or not finite
-    /// (a singular matrix, NaN or infinite entries, or a determinant beyond
-    /// `f32::MAX`, about 1e38, even if the inverse itself would fit), or
-    /// when an entry of the inverse would not be finite; every `Some` holds
-    /// finite entries.
+    /// None. Returns `None` for a singular matrix (a zero determinant) and
+    /// for NaN or infinite entries. Every step is checked before the next
+    /// one can overflow, so that no product or sum ever meets an infinity
+    /// and every `Some` holds finite entries: `None` also when an entry is
+    /// beyond 2^63 (about 9e18), when a 2x2 minor of the columns is beyond
+    /// 2^62, when `1 / det` overflows, or when a minor over the determinant
+    /// times the largest entry is beyond 2^125 (about 4e37), even if the
+    /// inverse itself would fit.
     ///
     /// # Accuracy
     ///
@@ -245,6 +262,15 @@ impl Matrix4 {
     /// ```
     #[must_use]
     pub fn inverse(self) -> Option<Self> {
+        // Entries within 2^63: each product of two is within 2^126, each
+        // 2x2 minor (a difference of two) within 2^127, all finite.
+        if !self.is_finite() {
+            return None;
+        }
+        let entry = largest_magnitude(&self.to_cols_array());
+        if entry > INVERSE_ENTRY_LIMIT {
+            return None;
+        }
         let [ca, cb, cc, cd] = self.cols;
         let (a, b, c, d) = (ca.xyz(), cb.xyz(), cc.xyz(), cd.xyz());
         let (x, y, z, w) = (ca.w, cb.w, cc.w, cd.w);
@@ -252,14 +278,29 @@ impl Matrix4 {
         let t = c.cross(d);
         let u = a * y - b * x;
         let v = c * w - d * z;
+        // Minors within 2^62: the six products of the determinant are
+        // within 2^124, their sum within 2^127.
+        let minors = [s, t, u, v].map(|m| largest_magnitude(&[m.x, m.y, m.z]));
+        if largest_magnitude(&minors) > INVERSE_MINOR_LIMIT {
+            return None;
+        }
         let det = s.dot(v) + t.dot(u);
-        // An infinite determinant would make every entry 0 below; a zero or
-        // NaN one makes them non-finite, which the last line rejects.
-        if !det.is_finite() {
+        if det == 0.0 {
             return None;
         }
         let inv_det = 1.0 / det;
+        if !inv_det.is_finite() {
+            return None;
+        }
         let (s, t, u, v) = (s * inv_det, t * inv_det, u * inv_det, v * inv_det);
+        // Each product below is an entry times a scaled minor, within
+        // 2^125 once their largest are; sums of up to three stay within
+        // 2^127. (A scaled minor that overflowed is infinite, and so is
+        // this product: no NaN on the way.)
+        let scaled = [s, t, u, v].map(|m| largest_magnitude(&[m.x, m.y, m.z]));
+        if largest_magnitude(&scaled) * entry > INVERSE_PRODUCT_LIMIT {
+            return None;
+        }
         // Rows of the inverse.
         let r0 = b.cross(v) + t * y;
         let r1 = v.cross(a) - t * x;
@@ -271,8 +312,7 @@ impl Matrix4 {
             Cvec4::new(r2.x, r2.y, r2.z, -d.dot(s)),
             Cvec4::new(r3.x, r3.y, r3.z, c.dot(s)),
         );
-        let inverse = rows.transpose();
-        inverse.is_finite().then_some(inverse)
+        Some(rows.transpose())
     }
 
     /// The normal matrix: the inverse transpose of the upper 3x3 block, as
@@ -284,7 +324,9 @@ impl Matrix4 {
     /// # Preconditions
     ///
     /// None. `None` when the 3x3 block is singular (a zero scale) or not
-    /// finite, as for [`inverse`](Self::inverse).
+    /// finite, or its entries, minors or `1 / det` beyond the limits of
+    /// [`inverse`](Self::inverse), or an entry of the result would not be
+    /// finite.
     ///
     /// ```
     /// use rigtform::{Cvec3, Matrix4};
@@ -297,19 +339,36 @@ impl Matrix4 {
         let (a, b, c) = (a.xyz(), b.xyz(), c.xyz());
         // The inverse of [a b c] has rows (b x c, c x a, a x b) / det,
         // so its transpose has them as columns.
+        // As in `inverse`, each step is checked before it can overflow:
+        // entries within 2^63 keep the cross products finite, and minors
+        // within 2^62 the determinant.
+        let entries = [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z];
+        if !(a.is_finite() && b.is_finite() && c.is_finite())
+            || largest_magnitude(&entries) > INVERSE_ENTRY_LIMIT
+        {
+            return None;
+        }
         let (bc, ca, ab) = (b.cross(c), c.cross(a), a.cross(b));
+        let minors = [bc, ca, ab].map(|m| largest_magnitude(&[m.x, m.y, m.z]));
+        if largest_magnitude(&minors) > INVERSE_MINOR_LIMIT {
+            return None;
+        }
         let det = a.dot(bc);
-        // As in `inverse`: zero and NaN are caught by the last line.
-        if !det.is_finite() {
+        if det == 0.0 {
             return None;
         }
         let inv_det = 1.0 / det;
+        if !inv_det.is_finite() {
+            return None;
+        }
         let n = Self::from_cols(
             Cvec4::from_vector(bc * inv_det),
             Cvec4::from_vector(ca * inv_det),
             Cvec4::from_vector(ab * inv_det),
             Cvec4::new(0.0, 0.0, 0.0, 1.0),
         );
+        // Each scaled minor is a product of two finite numbers: finite,
+        // or infinite where the normal matrix does not fit.
         n.is_finite().then_some(n)
     }
 

@@ -1,8 +1,8 @@
 //! `slerp`, `nlerp`, `blend` and `slerp_slice` on raw bit patterns
 //! (contract item 3): unit results for unit inputs and every finite alpha,
-//! exactness at alpha = 0, the short way at constant angular velocity, NaN
-//! out for NaN in, the slice equal to slerp bit for bit, and no panic on
-//! anything.
+//! exactness at alpha = 0, the short way at constant angular velocity, the
+//! rotation of the notes' formula in `f64` for alpha in [-1, 2], NaN out for
+//! NaN in, the slice equal to slerp bit for bit, and no panic on anything.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -67,6 +67,10 @@ fuzz_target!(|input: Input| {
     };
     if alpha.is_finite() {
         assert_holds(laws::slerp_is_unit(ua, ub, alpha));
+        assert_holds(laws::slerp_takes_the_short_way(ua, ub, alpha));
+    }
+    if (-1.0..=2.0).contains(&alpha) {
+        assert_holds(laws::slerp_matches_the_notes(ua, ub, alpha));
     }
     // Identical and antipodal pairs, whatever the fuzzer drew for b.
     assert_holds(laws::slerp_is_unit(ua, ua, 0.5));

@@ -130,6 +130,13 @@ fn normalize_is_unit_from_subnormal_to_max() {
         // exact power-of-two rescaling is the point.
         let q = any_finite_quat();
         kani::assume(q != Quat::new(0.0, 0.0, 0.0, 0.0));
+        // The branches of scale_for_squares: the sum of squares underflows
+        // (components below 2^-75 or so) or overflows (beyond 2^63).
+        let largest = [q.w, q.x, q.y, q.z]
+            .iter()
+            .fold(0.0f32, |m, c| m.max(c.abs()));
+        kani::cover!(largest < 1e-25, "scaled up");
+        kani::cover!(largest > 1e20, "scaled down");
         assert_holds(laws::normalize_is_unit(q));
     });
 }
@@ -150,6 +157,8 @@ fn pow_is_unit_for_every_finite_input() {
         // Preconditions: finite quaternion and exponent. No solver bound.
         let q = any_finite_quat();
         let alpha = any_finite();
+        kani::cover!(q.x == 0.0 && q.y == 0.0 && q.z == 0.0, "pure real");
+        kani::cover!(alpha.abs() > f32::MAX / 4.0, "fourth power");
         assert_holds(laws::pow_is_unit(q, alpha));
     });
 }
@@ -196,8 +205,23 @@ fn slerp_of_non_finite_input_is_nan() {
 fn slerp_is_unit_for_every_finite_alpha() {
     check("slerp_is_unit_for_every_finite_alpha", || {
         // Preconditions: unit inputs, finite alpha. No solver bound.
-        let (a, b) = (any_unit_quat(), any_unit_quat());
+        let a = any_unit_quat();
+        // Half the pairs within 2^-11 rad of each other (a turned about
+        // x), so that the small-angle branch is reached.
+        let b = if kani::any() {
+            any_unit_quat()
+        } else {
+            (a * Quat::from_rotation_x(any_within(4.9e-4))).normalize()
+        };
         let alpha = any_finite();
+        let in_plane = (0.0..=1.0).contains(&alpha) && alpha != 0.0;
+        // slerp's phi is half the rotation angle: below 2^-12, the
+        // small-angle branch (at 0, the early return).
+        let angle = a.angle_to(b);
+        let close = angle > 0.0 && angle < 4.8e-4;
+        kani::cover!(in_plane && !close, "in plane");
+        kani::cover!(in_plane && close, "small angle");
+        kani::cover!(!(0.0..=1.0).contains(&alpha), "extrapolating");
         assert_holds(laws::slerp_is_unit(a, b, alpha));
     });
 }
@@ -211,6 +235,55 @@ fn slerp_is_exact_at_zero() {
         // Precondition: components within 2^60, so that b a^-1 is finite.
         let (a, b) = (any_quat_within(TWO_TO_60), any_quat_within(TWO_TO_60));
         assert_holds(laws::slerp_is_exact_at_zero(a, b));
+    });
+}
+
+/// The short way: `b` and `-b` give one path. Heavy for a solver (two
+/// slerps of symbolic unit inputs, real atan2 and sines); its point is
+/// `cn`, which is exact sign arithmetic.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(not(kani), test)]
+fn slerp_takes_the_short_way() {
+    check("slerp_takes_the_short_way", || {
+        // Preconditions: unit inputs, finite alpha.
+        let (a, b) = (any_unit_quat(), any_unit_quat());
+        let alpha = any_finite();
+        kani::cover!(a.dot(b) < 0.0, "b on the far side");
+        assert_holds(laws::slerp_takes_the_short_way(a, b, alpha));
+    });
+}
+
+/// Constant angular velocity: the turn from `a` is `alpha` times the angle
+/// to `b`. Heavy for a solver (three angles through atan2 and square
+/// roots of symbolic unit inputs): a stand-in test until it is split.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
+#[cfg_attr(not(kani), test)]
+fn slerp_turns_by_alpha_times_the_angle() {
+    check("slerp_turns_by_alpha_times_the_angle", || {
+        // Preconditions: unit inputs, alpha in [0, 1].
+        let (a, b) = (any_unit_quat(), any_unit_quat());
+        let alpha = kani::any_where(|t: &f32| (0.0..=1.0).contains(t));
+        assert_holds(laws::slerp_turns_by_alpha_times_the_angle(a, b, alpha));
+    });
+}
+
+/// `pow` turns as the notes define it, against the notes' formula in
+/// `f64` (libm's sines and arctangent): not a proof target (Kani would
+/// have to reason through libm's f64 kernels), a stand-in test only; the
+/// `pow` fuzz target checks the same law.
+#[cfg(all(test, not(kani)))]
+#[test]
+fn pow_turns_as_the_notes_define() {
+    check("pow_turns_as_the_notes_define", || {
+        // Preconditions: finite quaternion, alpha in [-4, 4].
+        let q = any_finite_quat();
+        let alpha = any_within(4.0);
+        kani::cover!(q.w < 0.0, "w < 0");
+        assert_holds(laws::pow_turns_as_the_notes_define(q, alpha));
     });
 }
 
@@ -240,6 +313,7 @@ fn blend_of_three_is_unit_or_identity() {
             (any_unit_quat(), any_within(MILLION)),
             (any_unit_quat(), any_within(MILLION)),
         ];
+        kani::cover!(Quat::blend(&entries) == Quat::IDENTITY, "identity");
         assert_holds(laws::blend_is_unit_or_identity(&entries));
     });
 }
@@ -344,9 +418,9 @@ fn rigtform_interpolate_is_exact_at_zero() {
 fn matrix_inverse_is_none_or_finite() {
     check("matrix_inverse_is_none_or_finite", || {
         // No assumption: every bit pattern of every entry.
-        let m: [f32; 16] = core::array::from_fn(|_| kani::any());
-        assert_holds(laws::matrix_inverse_is_none_or_finite(
-            Matrix4::from_cols_array(&m),
-        ));
+        let m = Matrix4::from_cols_array(&core::array::from_fn(|_| kani::any()));
+        kani::cover!(m.inverse().is_some(), "Some");
+        kani::cover!(m.inverse().is_none(), "None");
+        assert_holds(laws::matrix_inverse_is_none_or_finite(m));
     });
 }

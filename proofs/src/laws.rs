@@ -192,6 +192,34 @@ pub fn pow_is_unit(q: Quat, alpha: f32) -> Verdict {
     within("pow_is_unit", (norm2(r) - 1.0).abs(), ONE_STEP_NORM_TOL)
 }
 
+/// `pow` turns as the notes define it: the rotation of `q.pow(alpha)` is
+/// that of the notes' formula evaluated in `f64` from the same inputs
+/// ([`Quat64::pow`](crate::reference::Quat64::pow): `phi = atan2(|v|, w)`,
+/// no conditional negation), to within twice the documented
+/// [`POW_MAX_ANGLE_ERROR`](rigtform::accuracy::POW_MAX_ANGLE_ERROR) per
+/// radian turned (at least one). A norm check cannot see a wrong angle:
+/// `(-q).pow(alpha)` is unit too, but turns the other way for `w < 0`.
+///
+/// Preconditions: `q` finite, `alpha` in `[-4, 4]` (the documented
+/// accuracy's range, with a margin; beyond it, where `w` times the scaling
+/// of a tiny vector part overflows, `phi` is rounded to 0 and a huge
+/// `alpha` multiplies that). Uses `f64` sines and arctangents (libm's): a
+/// law for the tests and the fuzz targets, not for Kani.
+pub fn pow_turns_as_the_notes_define(q: Quat, alpha: f32) -> Verdict {
+    use crate::reference::Quat64;
+    let q64 = Quat64::from(q);
+    let want = q64.pow(alpha.into());
+    let got = Quat64::from(q.pow(alpha));
+    let beta = libm::sqrt(q64.x * q64.x + q64.y * q64.y + q64.z * q64.z);
+    let theta = 2.0 * libm::atan2(beta, q64.w);
+    let turned = (f64::from(alpha) * theta).abs();
+    within(
+        "pow_turns_as_the_notes_define",
+        Quat64::angle_between(got, want),
+        2.0 * f64::from(rigtform::accuracy::POW_MAX_ANGLE_ERROR) * turned.max(1.0),
+    )
+}
+
 /// NaN or infinity in, NaN out: `pow` of a non-finite quaternion or with a
 /// non-finite exponent is [`Quat::NAN`].
 ///
@@ -241,6 +269,63 @@ pub fn slerp_turns_by_alpha_times_the_angle(a: Quat, b: Quat, alpha: f32) -> Ver
         (f64::from(turned) - f64::from(alpha) * f64::from(theta)).abs(),
         slerp_angle_tol(theta.into()),
     )
+}
+
+/// `slerp` is the notes' `cn(b a^-1)^alpha a`: its rotation is that of the
+/// formula evaluated in `f64` from the same inputs
+/// ([`Quat64::slerp`](crate::reference::Quat64::slerp)), to within twice
+/// the documented [`SLERP_MAX_ANGLE_ERROR`](rigtform::accuracy::SLERP_MAX_ANGLE_ERROR)
+/// per radian turned (at least one).
+///
+/// Preconditions: `a` and `b` unit to [`ONE_STEP_NORM_TOL`], `alpha` in
+/// `[-1, 2]` (farther out, extrapolating from nearly identical inputs has a
+/// documented error of its own). Uses libm's `f64` functions: a law for the
+/// tests and the fuzz targets, not for Kani.
+pub fn slerp_matches_the_notes(a: Quat, b: Quat, alpha: f32) -> Verdict {
+    use crate::reference::Quat64;
+    let (a64, b64) = (Quat64::from(a), Quat64::from(b));
+    let got = Quat64::from(a.slerp(b, alpha));
+    let theta = Quat64::angle_between(a64, b64);
+    // The transition b a^-1 and its negation: cn picks the one with w >= 0.
+    // Within rounding of w = 0 (rotations pi apart) both ways are short,
+    // and the sign of slerp's f32 dot product picks one: either is right.
+    let d = b64 * a64.conj();
+    let minus_d = Quat64 {
+        w: -d.w,
+        x: -d.x,
+        y: -d.y,
+        z: -d.z,
+    };
+    let error = |d: Quat64| Quat64::angle_between(got, d.pow(alpha.into()) * a64);
+    let measured = if d.w.abs() <= PI_APART_DOT {
+        error(d).min(error(minus_d))
+    } else {
+        error(if d.w < 0.0 { minus_d } else { d })
+    };
+    within(
+        "slerp_matches_the_notes",
+        measured,
+        slerp_angle_tol(f64::from(alpha).abs() * theta),
+    )
+}
+
+/// `|a . b|` below which two unit quaternions count as rotations pi apart
+/// for [`slerp_matches_the_notes`]: several f32 roundings of a dot product
+/// of unit inputs (a few 1e-8).
+const PI_APART_DOT: f64 = 1e-6;
+
+/// Slerp takes the short way: `b` and `-b` are one rotation, so they give
+/// one path (the rounding is the same: `cn` flips `-b` back to `b`
+/// exactly). Only rotations exactly pi apart (`a.dot(b) == 0`) have two
+/// short ways, and the sign of the rounded dot product picks one.
+///
+/// Preconditions: `a` and `b` unit to [`ONE_STEP_NORM_TOL`], `alpha` finite.
+pub fn slerp_takes_the_short_way(a: Quat, b: Quat, alpha: f32) -> Verdict {
+    if a.dot(b) == 0.0 {
+        return Ok(());
+    }
+    let (p, q) = (a.slerp(b, alpha), a.slerp(-b, alpha));
+    yes_or_no("slerp_takes_the_short_way", p == q || p == -q)
 }
 
 /// `slerp(a, b, 1)` is the rotation of `b` (possibly as `-b`), to within

@@ -112,7 +112,7 @@ fn sin_cos_poly(r: f32, t: f32) -> (f32, f32) {
 /// [`accuracy::SIN_COS_NARROW_MAX_ULP`](crate::accuracy::SIN_COS_NARROW_MAX_ULP)).
 /// Arguments outside the range get no reduction: the caller guarantees the
 /// range.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub(crate) fn sin3(a: f32, b: f32, c: f32) -> (f32, f32, f32) {
     (

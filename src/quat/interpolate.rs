@@ -71,7 +71,9 @@ impl Quat {
     ///
     /// `self` and `other` are unit quaternions, or nearly so (the result has
     /// the norm of `self`, up to rounding). NaN or infinite inputs give
-    /// [`Quat::NAN`]. Every finite `alpha` gives a unit result; beyond
+    /// [`Quat::NAN`], as do inputs whose squared norms overflow
+    /// (components of order 1e19 and beyond). Every finite `alpha` gives a
+    /// unit result; beyond
     /// 2^125 in magnitude, where an ulp of `alpha phi` is many turns, it is
     /// taken as +-2^125.
     ///
@@ -104,13 +106,22 @@ impl Quat {
     #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
     #[must_use]
     pub fn slerp(self, other: Self, alpha: f32) -> Self {
-        // Zero times the sum of all inputs is NaN exactly when one of them
-        // is NaN or infinite, or when they are so huge that the sum
-        // overflows (where the squared norms below would overflow anyway):
-        // one test instead of nine, for flash.
-        let sum = self.w + self.x + self.y + self.z + other.w + other.x + other.y + other.z;
-        if ((sum + alpha) * 0.0).is_nan() {
+        // The squared norms are sums of squares: NaN exactly for a NaN
+        // component, infinite for an infinite one or where they overflow
+        // (components beyond about 1e19, where the products below would
+        // overflow anyway). With |alpha|, one comparison catches every
+        // non-finite input, and no operation makes a NaN from numbers
+        // (as `x * 0.0` or `x - x` would from an infinity).
+        let n2 = self.norm_squared();
+        let on2 = other.norm_squared();
+        // Written to be true for NaN too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        let not_finite = !(n2 + on2 + alpha.abs() <= f32::MAX);
+        if not_finite {
             return Self::NAN;
+        }
+        if alpha == 0.0 {
+            return self;
         }
         // The w of other * self.inv(); cn flips other when it is negative
         // (multiplying by the sign, exactly, rather than branching on it).
@@ -121,11 +132,10 @@ impl Quat {
         // The part of other orthogonal to self, times |self|^2 (exactly
         // orthogonal for any norm of self, in exact arithmetic), scaled by
         // a power of two if its squares would underflow.
-        let n2 = self.norm_squared();
         let u = scale_for_squares(other.weighted_sum(n2, self, -dot).to_array());
-        if u.sum == 0.0 || alpha == 0.0 {
+        if u.sum == 0.0 {
             // Identical or antipodal (or a zero input): the transition is
-            // the identity, and so is its every power. And alpha = 0.
+            // the identity, and so is its every power.
             return self;
         }
         // |u| = |self|^2 |other| sin(phi) and |self| dot = |self|^2 |other|
@@ -139,15 +149,15 @@ impl Quat {
         if cfg!(feature = "fast-math") || !(0.0..=1.0).contains(&alpha) {
             return self.slerp_extrapolated(u, n2, n, beta, phi, alpha);
         }
-        self.slerp_in_plane(other, n2, phi, alpha)
+        self.slerp_in_plane(other, n2, on2, phi, alpha)
     }
 
     /// Slerp for `alpha` in [0, 1]: `(sin((1 - alpha) phi) self +
     /// sin(alpha phi) other) / sin(phi)`, in the plane of `self` and
-    /// `other` (already on the short side), with `n2 = |self|^2` and the
-    /// notes' `phi` in (0, pi/2].
+    /// `other` (already on the short side), with `n2 = |self|^2`,
+    /// `on2 = |other|^2` and the notes' `phi` in (0, pi/2].
     #[inline(always)]
-    fn slerp_in_plane(self, other: Self, n2: f32, phi: f32, alpha: f32) -> Self {
+    fn slerp_in_plane(self, other: Self, n2: f32, on2: f32, phi: f32, alpha: f32) -> Self {
         // alpha phi and (1 - alpha) phi add up to phi exactly where f32
         // allows (Sterbenz), so that the result stays on the arc.
         let far = alpha * phi;
@@ -166,7 +176,6 @@ impl Quat {
         // For inputs off unit norm, other / |other| * |self| is the endpoint
         // on self's sphere. Within rounding of unit norm the factor is taken
         // as 1: computed, it would be off by as much as it corrects.
-        let on2 = other.norm_squared();
         let c1 = if (n2 - on2).abs() > NEARLY_UNIT * on2 {
             c1 * float::sqrt(n2 / on2)
         } else {
