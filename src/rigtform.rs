@@ -194,7 +194,8 @@ impl RigTForm {
     /// Interpolates every pair `(starts[i], ends[i])` by the same `alpha`
     /// into `out[i]`: element by element, bit for bit, what
     /// [`interpolate`](Self::interpolate) returns for the pair, whatever
-    /// the inputs. The rotations go, 64 at a time, through
+    /// the inputs (where that is NaN, a NaN: Rust leaves the sign and
+    /// payload of a NaN result unspecified). The rotations go, 64 at a time, through
     /// [`Quat::slerp_slice`] (vectorized on x86-64 and AArch64).
     ///
     /// Slices of different lengths: the first

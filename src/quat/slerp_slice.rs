@@ -7,7 +7,9 @@ use super::Quat;
 impl Quat {
     /// Slerps every pair `(starts[i], ends[i])` by the same `alpha` into
     /// `out[i]`: element by element, bit for bit, what
-    /// [`slerp`](Self::slerp) returns for the pair, whatever the inputs.
+    /// [`slerp`](Self::slerp) returns for the pair, whatever the inputs
+    /// (where that is NaN, a NaN: Rust leaves the sign and payload of a NaN
+    /// result unspecified).
     ///
     /// Slices of different lengths: the first
     /// `min(starts.len(), ends.len(), out.len())` elements are written, and
