@@ -29,12 +29,19 @@
 //! - [`OrientationFilter`] with [`FilterParams`]: gyroscope + accelerometer
 //!   (+ magnetometer) fusion with gyro-bias estimation.
 
+mod alignment;
+mod calibration;
+mod diagnostics;
 mod filter;
 mod low_pass;
+mod outputs;
 mod params;
 mod rest;
 mod smoother;
 
+pub use alignment::{AxesAlignment, Axis};
+pub use calibration::{InertialCalibration, MagneticCalibration};
+pub use diagnostics::Diagnostics;
 pub use filter::OrientationFilter;
 pub use params::FilterParams;
 pub use smoother::Smoother;

@@ -229,6 +229,26 @@ mod tests {
         }
     }
 
+    /// The one-argument kernels against their stubs' contracts on every
+    /// f32 (NaNs included): run by hand after changing a kernel, with the
+    /// kernel sweeps (`cargo test --release --lib -- --ignored
+    /// exhaustive_kernel_sweep`). atan2's two arguments are sampled above.
+    #[test]
+    #[ignore = "every f32, twice: run by hand in release"]
+    fn exhaustive_kernel_sweep_of_the_stub_contracts() {
+        use rigtform_proofs::contracts;
+        let mut broken = None;
+        for bits in 0..=u32::MAX {
+            let x = f32::from_bits(bits);
+            let (s, c) = sin_cos(x);
+            if !contracts::sin_cos(x, s, c) || !contracts::sqrt(x, sqrt(x)) {
+                broken = Some(x);
+                break;
+            }
+        }
+        assert_eq!(broken, None, "a kernel breaks its contract");
+    }
+
     #[test]
     fn sin_cos_is_relatively_accurate_near_zero() {
         // Small rotations need relative, not absolute, accuracy: within an

@@ -93,6 +93,7 @@
 
 pub mod accuracy;
 pub mod attitude;
+mod display;
 mod features;
 mod float;
 mod matrix;
@@ -111,7 +112,7 @@ pub mod kani_kernels {
 }
 
 pub use matrix::Matrix4;
-pub use quat::Quat;
+pub use quat::{EulerRot, Quat};
 pub use rigtform::RigTForm;
 pub use vec::{Cvec3, Cvec4};
 

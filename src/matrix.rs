@@ -2,7 +2,7 @@
 //! notes' "more code"): the projection, the model-view matrix (MVM, with a
 //! scale on the right) and the normal matrix (NMVM).
 
-use core::ops::Mul;
+use core::ops::{Mul, MulAssign};
 
 use crate::float;
 use crate::quat::Quat;
@@ -271,13 +271,20 @@ impl Matrix4 {
         if entry > INVERSE_ENTRY_LIMIT {
             return None;
         }
-        let [ca, cb, cc, cd] = self.cols;
-        let (a, b, c, d) = (ca.xyz(), cb.xyz(), cc.xyz(), cd.xyz());
-        let (x, y, z, w) = (ca.w, cb.w, cc.w, cd.w);
-        let s = a.cross(b);
-        let t = c.cross(d);
-        let u = a * y - b * x;
-        let v = c * w - d * z;
+        let Cofactors {
+            a,
+            b,
+            c,
+            d,
+            x,
+            y,
+            z,
+            w,
+            s,
+            t,
+            u,
+            v,
+        } = self.cofactors();
         // Minors within 2^62: the six products of the determinant are
         // within 2^124, their sum within 2^127.
         let minors = [s, t, u, v].map(|m| largest_magnitude(&[m.x, m.y, m.z]));
@@ -313,6 +320,63 @@ impl Matrix4 {
             Cvec4::new(r3.x, r3.y, r3.z, c.dot(s)),
         );
         Some(rows.transpose())
+    }
+
+    /// The determinant: the factor by which the matrix scales volumes in
+    /// 4D (for an affine map, that of its upper 3x3 block: the volume scale
+    /// of the 3D map, negative where it mirrors).
+    ///
+    /// Computed from the same cross products of the columns as
+    /// [`inverse`](Self::inverse): `det = s . v + t . u`.
+    ///
+    /// # Preconditions
+    ///
+    /// None. NaN or infinite entries, or products beyond `f32::MAX`, give a
+    /// NaN or infinite determinant.
+    ///
+    /// # Accuracy
+    ///
+    /// Relative error at most
+    /// [`accuracy::DETERMINANT_MAX_REL_ERROR`](crate::accuracy::DETERMINANT_MAX_REL_ERROR)
+    /// times the condition number `|M| |M^-1|` (Frobenius).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix4, Quat, RigTForm};
+    /// let m = Matrix4::from_scale(Cvec3::new(2.0, 3.0, -0.5));
+    /// assert_eq!(m.determinant(), -3.0);
+    /// let rigid = Matrix4::from(RigTForm::new(Cvec3::X, Quat::from_rotation_y(0.4)));
+    /// assert!((rigid.determinant() - 1.0).abs() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn determinant(self) -> f32 {
+        let Cofactors { s, t, u, v, .. } = self.cofactors();
+        s.dot(v) + t.dot(u)
+    }
+
+    /// The columns split into their first three coordinates `a, b, c, d`
+    /// and their last `x, y, z, w`, and the four 3-vectors whose products
+    /// give the determinant and the inverse.
+    #[inline]
+    fn cofactors(self) -> Cofactors {
+        let [ca, cb, cc, cd] = self.cols;
+        let (a, b, c, d) = (ca.xyz(), cb.xyz(), cc.xyz(), cd.xyz());
+        let (x, y, z, w) = (ca.w, cb.w, cc.w, cd.w);
+        Cofactors {
+            a,
+            b,
+            c,
+            d,
+            x,
+            y,
+            z,
+            w,
+            s: a.cross(b),
+            t: c.cross(d),
+            u: a * y - b * x,
+            v: c * w - d * z,
+        }
     }
 
     /// The normal matrix: the inverse transpose of the upper 3x3 block, as
@@ -406,6 +470,44 @@ impl Matrix4 {
         )
     }
 
+    /// The orthographic projection of `glOrtho`: the box `left..right`,
+    /// `bottom..top` in x and y, and the positive distances `near` and
+    /// `far` in front of the eye (which looks down -z) maps to the NDC cube
+    /// [-1, 1]^3, `z = -near` to -1 and `z = -far` to +1. Parallel lines
+    /// stay parallel: there is no divide by depth (`w` stays 1).
+    ///
+    /// # Preconditions
+    ///
+    /// `left != right`, `bottom != top`, `near != far`, all finite. Nothing
+    /// is checked and nothing panics: an empty box divides by zero and
+    /// gives infinite or NaN entries.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use rigtform::{Cvec4, Matrix4};
+    /// let p = Matrix4::orthographic(-2.0, 2.0, -1.0, 1.0, 1.0, 9.0);
+    /// assert_eq!(p * Cvec4::new(2.0, 1.0, -1.0, 1.0), Cvec4::new(1.0, 1.0, -1.0, 1.0));
+    /// assert_eq!(p * Cvec4::new(-2.0, -1.0, -9.0, 1.0), Cvec4::new(-1.0, -1.0, 1.0, 1.0));
+    /// ```
+    #[doc(alias = "orthographic_rh_gl")]
+    #[doc(alias = "ortho")]
+    #[must_use]
+    pub fn orthographic(left: f32, right: f32, bottom: f32, top: f32, near: f32, far: f32) -> Self {
+        let (width, height, depth) = (right - left, top - bottom, far - near);
+        Self::from_cols(
+            Cvec4::new(2.0 / width, 0.0, 0.0, 0.0),
+            Cvec4::new(0.0, 2.0 / height, 0.0, 0.0),
+            Cvec4::new(0.0, 0.0, -2.0 / depth, 0.0),
+            Cvec4::new(
+                -(right + left) / width,
+                -(top + bottom) / height,
+                -(far + near) / depth,
+                1.0,
+            ),
+        )
+    }
+
     /// `true` if every entry is finite.
     ///
     /// ```
@@ -415,6 +517,53 @@ impl Matrix4 {
     #[must_use]
     pub fn is_finite(self) -> bool {
         self.cols.iter().all(|c| c.is_finite())
+    }
+}
+
+/// What [`Matrix4::cofactors`] returns.
+struct Cofactors {
+    a: Cvec3,
+    b: Cvec3,
+    c: Cvec3,
+    d: Cvec3,
+    x: f32,
+    y: f32,
+    z: f32,
+    w: f32,
+    s: Cvec3,
+    t: Cvec3,
+    u: Cvec3,
+    v: Cvec3,
+}
+
+impl From<[f32; 16]> for Matrix4 {
+    /// Same as [`Matrix4::from_cols_array`]: column-major.
+    #[inline]
+    fn from(m: [f32; 16]) -> Self {
+        Self::from_cols_array(&m)
+    }
+}
+
+impl From<Matrix4> for [f32; 16] {
+    /// Same as [`Matrix4::to_cols_array`]: column-major.
+    #[inline]
+    fn from(m: Matrix4) -> Self {
+        m.to_cols_array()
+    }
+}
+
+impl MulAssign<Matrix4> for Matrix4 {
+    /// `*self = *self * other`.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix4};
+    /// let mut m = Matrix4::from_translation(Cvec3::X);
+    /// m *= Matrix4::from_scale(Cvec3::new(2.0, 2.0, 2.0));
+    /// assert_eq!(m, Matrix4::from_translation(Cvec3::X) * Matrix4::from_scale(Cvec3::new(2.0, 2.0, 2.0)));
+    /// ```
+    #[inline]
+    fn mul_assign(&mut self, other: Matrix4) {
+        *self = *self * other;
     }
 }
 
@@ -499,6 +648,42 @@ mod tests {
         let big = Matrix4::from_scale(Cvec3::new(2f32.powi(43), 2f32.powi(43), 2f32.powi(43)));
         assert_eq!(big.inverse(), None);
         assert_eq!(big.normal_matrix(), None);
+    }
+
+    #[test]
+    fn determinant_is_the_volume_scale_and_arrays_round_trip() {
+        let m = Matrix4::from_cols_array(&[
+            2.0, 1.0, 0.0, 0.5, //
+            -1.0, 3.0, 1.0, 0.0, //
+            0.0, 0.5, 4.0, -1.0, //
+            1.0, 2.0, 3.0, 1.0,
+        ]);
+        let det = m.determinant();
+        let det64 =
+            nalgebra::Matrix4::from_column_slice(&m.to_cols_array().map(f64::from)).determinant();
+        assert!(
+            (f64::from(det) - det64).abs() < 1e-6 * det64.abs(),
+            "{det} vs {det64}"
+        );
+        let product = det * m.inverse().expect("invertible").determinant();
+        assert!((product - 1.0).abs() < 1e-6, "{det}");
+        let mut swapped = m;
+        swapped.cols.swap(0, 1);
+        assert_eq!(swapped.determinant(), -det);
+        assert_eq!(Matrix4::from(<[f32; 16]>::from(m)), m);
+        assert!(Matrix4::from_scale(Cvec3::new(f32::NAN, 1.0, 1.0))
+            .determinant()
+            .is_nan());
+    }
+
+    #[test]
+    fn orthographic_maps_its_box_to_the_ndc_cube() {
+        let p = Matrix4::orthographic(-3.0, 1.0, -2.0, 6.0, 1.0, 9.0);
+        for (x, y, z) in [(-3.0, -2.0, -1.0), (1.0, 6.0, -9.0), (-1.0, 2.0, -5.0)] {
+            let c = p * Cvec4::new(x, y, z, 1.0);
+            let want = Cvec4::new((x + 1.0) / 2.0, (y - 2.0) / 4.0, (-z - 5.0) / 4.0, 1.0);
+            assert!((c - want).norm() < 1e-6, "{c:?} vs {want:?}");
+        }
     }
 
     #[test]

@@ -4,18 +4,27 @@
 //!
 //! One file per further concept: `quat/power.rs` (the notes' "Power": the
 //! polar form and `pow`), `quat/interpolate.rs` ("to interpolate": `slerp`,
-//! `nlerp`, `blend`) and `quat/exp_log.rs` (the exponential and logarithm
-//! maps, and gyro integration built on them).
+//! `nlerp`, `blend`), `quat/exp_log.rs` (the exponential and logarithm
+//! maps, and gyro integration built on them), `quat/euler.rs` (Euler
+//! angles), `quat/from_matrix.rs` (the rotation of a rotation matrix),
+//! `quat/rotation_arc.rs` (the shortest rotation between two directions)
+//! and `quat/catmull_rom.rs` (splines through many keyframes).
 
-use core::ops::{Mul, Neg};
+use core::ops::{Mul, MulAssign, Neg};
 
 use crate::float::{self, scale_for_squares};
 use crate::vec::{Cvec3, Cvec4};
 
+pub(crate) mod catmull_rom;
+mod euler;
 mod exp_log;
+mod from_matrix;
 mod interpolate;
 mod power;
+mod rotation_arc;
 mod slerp_slice;
+
+pub use euler::EulerRot;
 
 use power::Polar;
 
@@ -182,13 +191,35 @@ impl Quat {
         Self::new(w, v.x, v.y, v.z)
     }
 
+    /// The components as an array `[w, x, y, z]`, scalar first as in the
+    /// notes. glam and `mint` store `[x, y, z, w]`, scalar last: glam's
+    /// `Quat::from_array([x, y, z, w])` is this crate's
+    /// `Quat::new(w, x, y, z)`.
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let q = Quat::new(1.0, 2.0, 3.0, 4.0);
+    /// assert_eq!(q.to_array(), [1.0, 2.0, 3.0, 4.0]);
+    /// let [w, x, y, z] = q.to_array();
+    /// let glam_order = [x, y, z, w];
+    /// assert_eq!(glam_order, [2.0, 3.0, 4.0, 1.0]);
+    /// ```
     #[inline]
-    const fn to_array(self) -> [f32; 4] {
+    #[must_use]
+    pub const fn to_array(self) -> [f32; 4] {
         [self.w, self.x, self.y, self.z]
     }
 
+    /// Builds a quaternion from an array `[w, x, y, z]`, scalar first (see
+    /// [`to_array`](Self::to_array) for glam's order).
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// assert_eq!(Quat::from_array([1.0, 0.0, 0.0, 0.0]), Quat::IDENTITY);
+    /// ```
     #[inline]
-    const fn from_array([w, x, y, z]: [f32; 4]) -> Self {
+    #[must_use]
+    pub const fn from_array([w, x, y, z]: [f32; 4]) -> Self {
         Self::new(w, x, y, z)
     }
 
@@ -208,6 +239,37 @@ impl Quat {
     #[must_use]
     pub fn is_finite(self) -> bool {
         self.w.is_finite() && self.x.is_finite() && self.y.is_finite() && self.z.is_finite()
+    }
+
+    /// `true` if any component is NaN.
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// assert!(Quat::NAN.is_nan());
+    /// assert!(!Quat::new(f32::INFINITY, 0.0, 0.0, 0.0).is_nan());
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn is_nan(self) -> bool {
+        self.w.is_nan() || self.x.is_nan() || self.y.is_nan() || self.z.is_nan()
+    }
+
+    /// `true` if the norm is within
+    /// [`accuracy::IS_NORMALIZED_TOLERANCE`](crate::accuracy::IS_NORMALIZED_TOLERANCE)
+    /// of 1: the quaternion can be handed to the methods that expect a
+    /// unit one. `false` for NaN or infinite components.
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// assert!(Quat::from_rotation_x(0.3).is_normalized());
+    /// assert!(!Quat::new(2.0, 0.0, 0.0, 0.0).is_normalized());
+    /// assert!(!Quat::NAN.is_normalized());
+    /// ```
+    #[doc(alias = "is_unit")]
+    #[inline]
+    #[must_use]
+    pub fn is_normalized(self) -> bool {
+        (self.norm_squared() - 1.0).abs() <= 2.0 * crate::accuracy::IS_NORMALIZED_TOLERANCE
     }
 
     /// The inverse of a unit quaternion, its conjugate `[w, -x, -y, -z]`
@@ -473,6 +535,37 @@ impl Mul<Quat> for Quat {
             self.w * o.y - self.x * o.z + self.y * o.w + self.z * o.x,
             self.w * o.z + self.x * o.y - self.y * o.x + self.z * o.w,
         )
+    }
+}
+
+impl MulAssign<Quat> for Quat {
+    /// `*self = *self * other`: `other` applied first, then `self`.
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let mut q = Quat::from_rotation_x(0.5);
+    /// q *= Quat::from_rotation_y(0.5);
+    /// assert_eq!(q, Quat::from_rotation_x(0.5) * Quat::from_rotation_y(0.5));
+    /// ```
+    #[inline]
+    fn mul_assign(&mut self, other: Quat) {
+        *self = *self * other;
+    }
+}
+
+impl From<[f32; 4]> for Quat {
+    /// Same as [`Quat::from_array`]: `[w, x, y, z]`, scalar first.
+    #[inline]
+    fn from(a: [f32; 4]) -> Self {
+        Self::from_array(a)
+    }
+}
+
+impl From<Quat> for [f32; 4] {
+    /// Same as [`Quat::to_array`]: `[w, x, y, z]`, scalar first.
+    #[inline]
+    fn from(q: Quat) -> Self {
+        q.to_array()
     }
 }
 

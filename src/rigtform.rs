@@ -1,11 +1,16 @@
 //! [`RigTForm`]: a rigid body transform kept as a translation and a rotation
 //! quaternion, as in the notes' "Rbt data structure", "rbt * rbt", "inv
-//! operator" and "rbt Interpolation".
+//! operator" and "rbt Interpolation"; `rigtform/look_at.rs` builds an eye
+//! frame from a point and a target, and `rigtform/catmull_rom.rs` holds
+//! the spline through many keyframes.
 
-use core::ops::Mul;
+use core::ops::{Mul, MulAssign};
 
 use crate::quat::Quat;
 use crate::vec::{Cvec3, Cvec4};
+
+mod catmull_rom;
+mod look_at;
 
 /// A rigid body transform `A = T R`: first rotate by `r`, then translate by
 /// `t`. As a matrix, `[[r, t], [0, 1]]`.
@@ -151,6 +156,49 @@ impl RigTForm {
         Self::new(-(r * self.t), r)
     }
 
+    /// Applies the transform to a point: rotated, then translated,
+    /// `r p + t`. The same as `self * Cvec4::from_point(p)`, without the
+    /// fourth coordinate.
+    ///
+    /// # Accuracy
+    ///
+    /// The rotation's error, at most
+    /// [`accuracy::ROTATE_MAX_REL_ERROR`](crate::accuracy::ROTATE_MAX_REL_ERROR)
+    /// times `|p|`, plus one rounding of the sum.
+    ///
+    /// ```
+    /// use core::f32::consts::FRAC_PI_2;
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let a = RigTForm::new(Cvec3::new(5.0, 0.0, 0.0), Quat::from_rotation_z(FRAC_PI_2));
+    /// assert!((a.transform_point(Cvec3::X) - Cvec3::new(5.0, 1.0, 0.0)).norm() < 1e-6);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn transform_point(self, p: Cvec3) -> Cvec3 {
+        self.r * p + self.t
+    }
+
+    /// Applies the transform to a vector (a direction or a displacement):
+    /// rotated only, `r v`; translations leave vectors alone. The same as
+    /// `self * Cvec4::from_vector(v)`, without the fourth coordinate.
+    ///
+    /// # Accuracy
+    ///
+    /// At most [`accuracy::ROTATE_MAX_REL_ERROR`](crate::accuracy::ROTATE_MAX_REL_ERROR)
+    /// times `|v|`.
+    ///
+    /// ```
+    /// use core::f32::consts::FRAC_PI_2;
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let a = RigTForm::new(Cvec3::new(5.0, 0.0, 0.0), Quat::from_rotation_z(FRAC_PI_2));
+    /// assert!((a.transform_vector(Cvec3::X) - Cvec3::Y).norm() < 1e-6);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn transform_vector(self, v: Cvec3) -> Cvec3 {
+        self.r * v
+    }
+
     /// Interpolates between two frames the notes' way: the translation by
     /// linear interpolation (the origin moves on a straight line at constant
     /// speed), the rotation by [`Quat::slerp`] (constant angular velocity
@@ -267,6 +315,21 @@ impl Mul<RigTForm> for RigTForm {
     }
 }
 
+impl MulAssign<RigTForm> for RigTForm {
+    /// `*self = *self * other`: `other` applied first, then `self`.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, RigTForm};
+    /// let mut a = RigTForm::from_rotation_z(0.3);
+    /// a *= RigTForm::from_translation(Cvec3::X);
+    /// assert_eq!(a, RigTForm::from_rotation_z(0.3) * RigTForm::from_translation(Cvec3::X));
+    /// ```
+    #[inline]
+    fn mul_assign(&mut self, other: RigTForm) {
+        *self = *self * other;
+    }
+}
+
 impl Mul<Cvec4> for RigTForm {
     type Output = Cvec4;
 
@@ -311,6 +374,40 @@ mod tests {
             assert_eq!(a, RigTForm::new(Cvec3::ZERO, r));
         }
         assert_eq!(RigTForm::default(), RigTForm::IDENTITY);
+    }
+
+    #[test]
+    fn points_move_with_the_frame_and_vectors_only_turn() {
+        let a = RigTForm::new(Cvec3::new(0.5, -1.0, 2.0), Quat::from_rotation_x(0.9));
+        let p = Cvec3::new(1.0, 2.0, 3.0);
+        assert_eq!(a.transform_point(p), (a * Cvec4::from_point(p)).xyz());
+        assert_eq!(a.transform_vector(p), (a * Cvec4::from_vector(p)).xyz());
+        assert!((a.transform_point(p) - a.transform_vector(p) - a.t).norm() < 1e-6);
+    }
+
+    #[test]
+    fn look_at_puts_the_target_on_minus_z_with_x_horizontal() {
+        let (eye, target) = (Cvec3::new(3.0, -2.0, 7.0), Cvec3::new(-1.0, 0.5, 0.25));
+        let e = RigTForm::look_at(eye, target, Cvec3::Y);
+        let ahead = e.inv().transform_point(target);
+        assert!((ahead - Cvec3::new(0.0, 0.0, -(target - eye).norm())).norm() < 1e-5);
+        assert!(e.transform_vector(Cvec3::X).y.abs() < 1e-6);
+        assert!(e.transform_vector(Cvec3::Y).y > 0.0);
+        assert!((e.r.norm() - 1.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn look_at_along_up_or_at_itself_gives_documented_rotations() {
+        let eye = Cvec3::new(0.0, 5.0, 0.0);
+        let down = RigTForm::look_at(eye, Cvec3::ZERO, Cvec3::Y);
+        assert!((down.transform_vector(-Cvec3::Z) + Cvec3::Y).norm() < 1e-6);
+        assert_eq!(down.r, Quat::from_rotation_arc(-Cvec3::Z, -Cvec3::Y));
+        assert_eq!(RigTForm::look_at(eye, Cvec3::ZERO, Cvec3::ZERO).r, down.r);
+        assert_eq!(
+            RigTForm::look_at(eye, eye, Cvec3::Y),
+            RigTForm::from_translation(eye)
+        );
+        assert!(RigTForm::look_at(eye, Cvec3::NAN, Cvec3::Y).r.is_nan());
     }
 
     #[test]

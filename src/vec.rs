@@ -1,7 +1,9 @@
 //! Coordinate vectors: [`Cvec3`] (a point or a direction) and [`Cvec4`]
 //! (homogeneous coordinates: `w = 1` for a point, `w = 0` for a vector).
 
-use core::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};
+use core::ops::{
+    Add, AddAssign, Div, DivAssign, Index, IndexMut, Mul, MulAssign, Neg, Sub, SubAssign,
+};
 
 use crate::float::scale_for_squares;
 
@@ -87,6 +89,18 @@ impl Cvec3 {
     #[must_use]
     pub const fn to_array(self) -> [f32; 3] {
         [self.x, self.y, self.z]
+    }
+
+    /// Builds a vector from an array `[x, y, z]`.
+    ///
+    /// ```
+    /// use rigtform::Cvec3;
+    /// assert_eq!(Cvec3::from_array([1.0, 2.0, 3.0]), Cvec3::new(1.0, 2.0, 3.0));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_array([x, y, z]: [f32; 3]) -> Self {
+        Self::new(x, y, z)
     }
 
     /// Dot product `x1 x2 + y1 y2 + z1 z2`.
@@ -454,15 +468,109 @@ macro_rules! componentwise_ops {
                 *self = *self - o;
             }
         }
+        impl MulAssign<f32> for $t {
+            #[inline]
+            fn mul_assign(&mut self, s: f32) {
+                *self = *self * s;
+            }
+        }
+        impl DivAssign<f32> for $t {
+            #[inline]
+            fn div_assign(&mut self, s: f32) {
+                *self = *self / s;
+            }
+        }
+    };
+}
+
+/// Indexing and array conversions, written once for both vector types.
+/// The last field takes every index past the end, so indexing never
+/// panics.
+macro_rules! indexing {
+    ($t:ident, $n:literal, { $($i:literal => $f:ident),+ }, $last:ident) => {
+        impl Index<usize> for $t {
+            type Output = f32;
+            /// The coordinate at `i`, in the order of the fields. Every
+            /// index past the end gives the last coordinate (never a panic).
+            #[inline]
+            fn index(&self, i: usize) -> &f32 {
+                match i {
+                    $($i => &self.$f,)+
+                    _ => &self.$last,
+                }
+            }
+        }
+        impl IndexMut<usize> for $t {
+            /// The coordinate at `i`, in the order of the fields. Every
+            /// index past the end gives the last coordinate (never a panic).
+            #[inline]
+            fn index_mut(&mut self, i: usize) -> &mut f32 {
+                match i {
+                    $($i => &mut self.$f,)+
+                    _ => &mut self.$last,
+                }
+            }
+        }
+        impl From<[f32; $n]> for $t {
+            /// Same as `from_array`.
+            #[inline]
+            fn from(a: [f32; $n]) -> Self {
+                Self::from_array(a)
+            }
+        }
+        impl From<$t> for [f32; $n] {
+            /// Same as `to_array`.
+            #[inline]
+            fn from(v: $t) -> Self {
+                v.to_array()
+            }
+        }
     };
 }
 
 componentwise_ops!(Cvec3 { x, y, z });
 componentwise_ops!(Cvec4 { x, y, z, w });
+indexing!(Cvec3, 3, { 0 => x, 1 => y }, z);
+indexing!(Cvec4, 4, { 0 => x, 1 => y, 2 => z }, w);
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn indexing_follows_the_fields_and_clamps_past_the_end() {
+        let mut v = Cvec3::new(1.0, 2.0, 3.0);
+        assert_eq!(
+            [v[0], v[1], v[2], v[3], v[usize::MAX]],
+            [1.0, 2.0, 3.0, 3.0, 3.0]
+        );
+        v[1] = 5.0;
+        v[9] = 7.0;
+        assert_eq!(v, Cvec3::new(1.0, 5.0, 7.0));
+        let mut c = Cvec4::new(1.0, 2.0, 3.0, 4.0);
+        c[2] = -1.0;
+        c[4] = 0.0;
+        assert_eq!(c, Cvec4::new(1.0, 2.0, -1.0, 0.0));
+        assert_eq!((c[0], c[1], c[7]), (1.0, 2.0, 0.0));
+    }
+
+    #[test]
+    fn compound_assignment_matches_the_operators_and_arrays_round_trip() {
+        let v = Cvec4::new(1.0, -2.0, 3.0, 0.5);
+        let mut m = v;
+        m *= 3.0;
+        assert_eq!(m, v * 3.0);
+        m /= 7.0;
+        assert_eq!(m, v * 3.0 / 7.0);
+        let mut u = Cvec3::new(1.0, 2.0, 4.0);
+        u *= 0.5;
+        u /= 0.25;
+        assert_eq!(u, Cvec3::new(2.0, 4.0, 8.0));
+        let a: [f32; 3] = u.into();
+        assert_eq!(Cvec3::from(a), u);
+        let b: [f32; 4] = v.into();
+        assert_eq!((b, Cvec4::from(b)), ([1.0, -2.0, 3.0, 0.5], v));
+    }
 
     #[test]
     fn cross_is_right_handed_and_anticommutative() {

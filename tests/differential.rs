@@ -10,7 +10,7 @@ use rigtform_testkit as testkit;
 
 use nalgebra as na;
 use rigtform::accuracy;
-use rigtform::{Cvec3, Matrix4, Quat};
+use rigtform::{Cvec3, EulerRot, Matrix4, Quat};
 use testkit::{angle_error, draw_count, slerp64, to_f64, Draws, Worst};
 
 fn norm_error(q: Quat) -> f64 {
@@ -238,6 +238,7 @@ fn inverse_of_general_matrices_is_within_its_bound() {
     // for any inverse computed in f32.
     let mut draws = Draws::new(7);
     let mut worst = Worst::new("Matrix4::inverse: rel. error / condition");
+    let mut det = Worst::new("Matrix4::determinant: rel. error / condition");
     let mut tested = 0;
     for _ in 0..draw_count() / 4 {
         let m: [f32; 16] = core::array::from_fn(|_| draws.uniform(-1.0, 1.0) as f32);
@@ -249,6 +250,11 @@ fn inverse_of_general_matrices_is_within_its_bound() {
         if cond > 1e4 {
             continue;
         }
+        let det64 = m64.determinant();
+        let got_det = Matrix4::from_cols_array(&m).determinant() as f64;
+        det.see((got_det - det64).abs() / det64.abs() / cond, || {
+            format!("{m:?}")
+        });
         let got = Matrix4::from_cols_array(&m)
             .inverse()
             .expect("a well-conditioned matrix has an inverse");
@@ -262,5 +268,171 @@ fn inverse_of_general_matrices_is_within_its_bound() {
         tested > draw_count() / 8,
         "too few well-conditioned draws: {tested}"
     );
+    det.check(accuracy::DETERMINANT_MAX_REL_ERROR);
     worst.check(accuracy::INVERSE_MAX_REL_ERROR);
+}
+
+#[test]
+fn catmull_rom_is_within_its_bound() {
+    let mut draws = Draws::new(30);
+    let mut angle = Worst::new("Quat::catmull_rom, 5 keys: angle error (rad)");
+    let mut norm = Worst::new("  ... |norm - 1|");
+    for _ in 0..draw_count() {
+        let keys: Vec<Quat> = draws.key_walk(5).iter().map(|k| k.r).collect();
+        let t = draws.uniform(0.0, 4.0) as f32;
+        let got = Quat::catmull_rom(&keys, t);
+        let keys64: Vec<_> = keys.iter().map(|&q| to_f64(q)).collect();
+        let want = testkit::catmull_rom::catmull_rom64(&keys64, t as f64);
+        angle.see(angle_error(got, want), || format!("{keys:?} {t}"));
+        norm.see(norm_error(got), || format!("{keys:?} {t}"));
+    }
+    angle.check(accuracy::CATMULL_ROM_MAX_ANGLE_ERROR);
+    norm.check(accuracy::NORMALIZE_MAX_NORM_ERROR);
+}
+
+#[test]
+fn euler_angles_are_within_their_bound_at_gimbal_lock_too() {
+    use core::f64::consts::{FRAC_PI_2, PI};
+    let mut draws = Draws::new(8);
+    let mut from = Worst::new("Quat::from_euler: angle error");
+    let mut norm = Worst::new("Quat::from_euler: |norm - 1|");
+    let mut to = Worst::new("Quat::to_euler: angle error of the angles' rotation");
+    for i in 0..draw_count() {
+        let order = EulerRot::ALL[i % 6];
+        let a = draws.uniform(-PI, PI) as f32;
+        let c = draws.uniform(-PI, PI) as f32;
+        // One draw in four at or within a hair of gimbal lock.
+        let b = match i % 8 {
+            0 => FRAC_PI_2 as f32,
+            1 => -FRAC_PI_2 as f32,
+            2 | 3 => {
+                (FRAC_PI_2 * draws.uniform(-1.0, 1.0).signum() - draws.uniform(-1e-4, 1e-4)) as f32
+            }
+            _ => draws.uniform(-FRAC_PI_2, FRAC_PI_2) as f32,
+        };
+        let got = Quat::from_euler(order, a, b, c);
+        let want = testkit::euler64(order, a as f64, b as f64, c as f64);
+        from.see(angle_error(got, want), || format!("{order:?} {a} {b} {c}"));
+        norm.see(norm_error(got), || format!("{order:?} {a} {b} {c}"));
+
+        // to_euler of a random rotation, and of the rotation just built.
+        for q in [draws.unit_quat(), got] {
+            let (x, y, z) = q.to_euler(order);
+            let back = testkit::euler64(order, x as f64, y as f64, z as f64);
+            to.see(angle_error(q, back), || format!("{order:?} {q:?}"));
+        }
+    }
+    from.check(accuracy::EULER_MAX_ANGLE_ERROR);
+    norm.check(accuracy::EULER_MAX_ANGLE_ERROR);
+    to.check(accuracy::EULER_MAX_ANGLE_ERROR);
+}
+
+#[test]
+fn from_matrix_is_within_its_bound_at_half_turns_too() {
+    let mut draws = Draws::new(9);
+    let mut angle = Worst::new("Quat::from_matrix: angle error");
+    let mut norm = Worst::new("Quat::from_matrix: |norm - 1|");
+    for i in 0..draw_count() {
+        let q = match i % 4 {
+            // Half turns and near half turns, where the trace form fails.
+            0 => Quat::from_axis_angle(
+                Cvec3::new(
+                    draws.uniform(-1.0, 1.0) as f32,
+                    draws.uniform(-1.0, 1.0) as f32,
+                    draws.uniform(-1.0, 1.0) as f32,
+                ),
+                core::f32::consts::PI - draws.uniform(0.0, 1e-3) as f32,
+            ),
+            _ => draws.unit_quat(),
+        };
+        let m = Matrix4::from_quat(q).to_cols_array();
+        let m64 = na::Matrix3::from_fn(|r, c| m[4 * c + r] as f64);
+        // The exact rotation of the f32 entries: the nearest rotation
+        // matrix (they are orthonormal to about 1e-7), then its quaternion.
+        let guess = na::UnitQuaternion::new_normalize(to_f64(q)).to_rotation_matrix();
+        let rot = na::Rotation3::from_matrix_eps(&m64, 1e-15, 100, guess);
+        let want = na::UnitQuaternion::from_rotation_matrix(&rot).into_inner();
+        let got = Quat::from_matrix(Matrix4::from_cols_array(&m));
+        angle.see(angle_error(got, want), || format!("{q:?}"));
+        norm.see(norm_error(got), || format!("{q:?}"));
+    }
+    angle.check(accuracy::FROM_MATRIX_MAX_ANGLE_ERROR);
+    norm.check(accuracy::NORMALIZE_MAX_NORM_ERROR);
+}
+
+#[test]
+fn rotation_arc_is_within_its_bound_for_opposite_directions_too() {
+    let mut draws = Draws::new(10);
+    let mut mapped = Worst::new("Quat::from_rotation_arc: |q a - b|");
+    let mut short = Worst::new("Quat::from_rotation_arc: angle error (<= 90 deg)");
+    let mut norm = Worst::new("Quat::from_rotation_arc: |norm - 1|");
+    let f32v = |v: na::Vector3<f64>| Cvec3::new(v.x as f32, v.y as f32, v.z as f32);
+    for i in 0..draw_count() {
+        let a64 = draws.unit_vec64() * draws.uniform(1e-3, 1e3);
+        let b64 = match i % 4 {
+            // Nearly opposite, exactly opposite, nearly the same, random.
+            0 => -a64 + draws.unit_vec64() * a64.norm() * draws.uniform(0.0, 1e-3),
+            1 => -a64 * draws.uniform(1e-3, 1e3),
+            2 => a64 + draws.unit_vec64() * a64.norm() * draws.uniform(0.0, 1e-3),
+            _ => draws.unit_vec64() * draws.uniform(1e-3, 1e3),
+        };
+        let (a, b) = (f32v(a64), f32v(b64));
+        let q = Quat::from_rotation_arc(a, b);
+        let (a64, b64) = (testkit::vec_to_f64(a), testkit::vec_to_f64(b));
+        let rotated = na::UnitQuaternion::new_normalize(to_f64(q)) * a64.normalize();
+        mapped.see((rotated - b64.normalize()).norm(), || {
+            format!("{a:?} {b:?}")
+        });
+        norm.see(norm_error(q), || format!("{a:?} {b:?}"));
+        // The axis a x b is ill-conditioned as the directions approach
+        // opposite (at 170 degrees a tilt of 1e-7 in either input already
+        // moves it by 6e-7): the angle is compared up to 90 degrees.
+        if a64.normalize().dot(&b64.normalize()) >= 0.0 {
+            let want = na::UnitQuaternion::rotation_between(&a64, &b64)
+                .expect("not opposite")
+                .into_inner();
+            short.see(angle_error(q, want), || format!("{a:?} {b:?}"));
+        }
+    }
+    short.check(accuracy::ROTATION_ARC_MAX_ERROR);
+    mapped.check(accuracy::ROTATION_ARC_MAX_ERROR);
+    norm.check(accuracy::NORMALIZE_MAX_NORM_ERROR);
+}
+
+#[test]
+fn look_at_is_within_its_bound() {
+    let mut draws = Draws::new(11);
+    let mut angle = Worst::new("RigTForm::look_at: angle error");
+    let mut norm = Worst::new("RigTForm::look_at: |norm - 1|");
+    let f32v = |v: na::Vector3<f64>| Cvec3::new(v.x as f32, v.y as f32, v.z as f32);
+    for _ in 0..draw_count() {
+        let eye = f32v(draws.unit_vec64() * draws.uniform(0.0, 100.0));
+        let target = f32v(draws.unit_vec64() * draws.uniform(0.0, 100.0));
+        let up = f32v(draws.unit_vec64() * draws.uniform(1e-3, 1e3));
+        let got = rigtform::RigTForm::look_at(eye, target, up).r;
+        // The exact eye frame of the same f32 points: z back along the line
+        // of sight, x = up x z, y = z x x.
+        let (eye, target, up) = (
+            testkit::vec_to_f64(eye),
+            testkit::vec_to_f64(target),
+            testkit::vec_to_f64(up),
+        );
+        let z = (eye - target).normalize();
+        let x = up.cross(&z).normalize();
+        // The roll is ill-conditioned as `up` nears the line of sight (its
+        // error grows as 1 / sin of the angle between them): the bound holds
+        // from 0.1 (about 6 degrees) on.
+        if up.normalize().cross(&z).norm() < 0.1 {
+            continue;
+        }
+        let y = z.cross(&x);
+        let rot = na::Rotation3::from_basis_unchecked(&[x, y, z]);
+        let want = na::UnitQuaternion::from_rotation_matrix(&rot).into_inner();
+        angle.see(angle_error(got, want), || {
+            format!("{eye:?} {target:?} {up:?}")
+        });
+        norm.see(norm_error(got), || format!("{eye:?} {target:?} {up:?}"));
+    }
+    angle.check(accuracy::LOOK_AT_MAX_ANGLE_ERROR);
+    norm.check(accuracy::NORMALIZE_MAX_NORM_ERROR);
 }

@@ -10,7 +10,7 @@ use rigtform::accuracy::{
     MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, RENORMALIZED_CHAIN_NORM_ERROR,
     SLERP_MAX_ANGLE_ERROR, UNIT_NORM_ERROR,
 };
-use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+use rigtform::{Cvec3, Cvec4, EulerRot, Matrix4, Quat, RigTForm};
 use testkit::{edge_quats, finite_edges};
 
 /// The documented error of a power that turns by `turn` radians, plus the
@@ -55,7 +55,15 @@ fn no_quat_function_panics_on_any_edge_combination() {
                     "{q:?} {alpha}: {s:?} {n:?}"
                 );
             }
-            calls += 3;
+            // Strictly between keys, the spline reads all of them: NaN
+            // out for a NaN or infinite key, and for a NaN t anywhere.
+            let t = 0.5 * alpha;
+            let c = Quat::catmull_rom(&[other, q, other], t);
+            let between = 0.0 < t && t < 2.0;
+            if (!finite && between) || t.is_nan() {
+                assert!(is_nan_quat(c), "{q:?} {alpha}: {c:?}");
+            }
+            calls += 4;
         }
         let (axis, angle) = q.to_axis_angle();
         assert_eq!(finite, axis.is_finite() && angle.is_finite(), "{q:?}");
@@ -77,7 +85,18 @@ fn no_quat_function_panics_on_any_edge_combination() {
         );
         let _ = (q.angle_to(other), Quat::blend(&[(q, 1.0), (other, 0.5)]));
         let _ = Matrix4::from_quat(q).inverse();
-        calls += 12;
+        let (a, b, c) = q.to_euler(EulerRot::ZYX);
+        assert_eq!(
+            finite,
+            a.is_finite() && b.is_finite() && c.is_finite(),
+            "{q:?}"
+        );
+        let m = Quat::from_matrix(Matrix4::from_quat(q));
+        assert!(m.is_finite() || m.is_nan(), "{q:?}: {m:?}");
+        let arc = Quat::from_rotation_arc(q.vector(), other.vector());
+        assert_eq!(q.vector().is_finite(), arc.is_finite(), "{q:?}: {arc:?}");
+        let _ = (q.is_nan(), q.is_normalized(), q.to_string());
+        calls += 17;
     }
     println!("{calls} calls on edge quaternions, no panic");
 }
@@ -111,7 +130,22 @@ fn no_function_panics_on_random_bit_patterns() {
             a.interpolate(b, alpha),
             a * Cvec4::from_point(v),
         );
+        let _ = (
+            Quat::from_euler(EulerRot::YXZ, alpha, any(), any()),
+            q.to_euler(EulerRot::XZY),
+            Quat::from_rotation_arc(v, b.t),
+            RigTForm::look_at(v, b.t, a.t),
+            a.transform_point(v),
+            a.transform_vector(v),
+            Quat::catmull_rom(&[q, r, q * r], alpha),
+            RigTForm::catmull_rom(&[a, b, a * b, b], alpha),
+        );
         let m = Matrix4::from_cols_array(&core::array::from_fn(|_| any()));
+        let _ = (
+            Quat::from_matrix(m),
+            m.determinant(),
+            Matrix4::orthographic(any(), any(), any(), any(), any(), any()),
+        );
         let inv = m.inverse();
         assert!(inv.is_none_or(|i| i.is_finite()), "{m:?}");
         let n = m.normal_matrix();
@@ -424,7 +458,7 @@ fn long_chains_drift_slowly_and_normalize_restores_unit_norm() {
     let mut q = Quat::IDENTITY;
     let mut worst = 0.0f32;
     for _ in 0..100_000 {
-        q = q * step;
+        q *= step;
         worst = worst.max((q.norm() - 1.0).abs());
     }
     println!("norm drift after 100000 chained products: {worst:.3e}");
@@ -461,7 +495,7 @@ fn renormalized_product_chain_stays_unit() {
     let (mut plain_drift, mut worst) = (0.0f32, 0.0f32);
     for i in 0..1_000_000 {
         let step = steps[i % steps.len()];
-        plain = plain * step;
+        plain *= step;
         renormalized = renormalized.mul_renormalized(step);
         plain_drift = plain_drift.max((plain.norm() - 1.0).abs());
         worst = worst.max((renormalized.norm() - 1.0).abs());

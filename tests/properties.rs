@@ -11,9 +11,9 @@ use rigtform::accuracy::{
     MATRIX_ENTRY_ERROR, MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, POW_MAX_ANGLE_ERROR,
     ROTATE_MAX_REL_ERROR, UNIT_NORM_ERROR,
 };
-use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+use rigtform::{accuracy, Cvec3, Cvec4, EulerRot, Matrix4, Quat, RigTForm};
 use rigtform_proofs::laws::{self, assert_holds};
-use testkit::{max_entry_diff, pow_tol, rig_tform, slerp_tol, unit_quat, vec3};
+use testkit::{key_walk, max_entry_diff, pow_tol, rig_tform, slerp_tol, unit_quat, vec3};
 
 /// The angle of a unit quaternion as the notes' power operator sees it, 2 atan2(|v|, w).
 fn quat_angle(q: Quat) -> f32 {
@@ -425,6 +425,200 @@ proptest! {
     fn law_matrix_inverse_is_none_or_finite(bits in prop::array::uniform16(any::<u32>())) {
         assert_holds(laws::matrix_inverse_is_none_or_finite(Matrix4::from_cols_array(&bits.map(f32::from_bits))));
     }
+}
+
+/// Every Euler order.
+fn euler_order() -> impl Strategy<Value = EulerRot> {
+    prop::sample::select(EulerRot::ALL.to_vec())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn law_euler_angles_give_back_the_rotation(q in unit_quat(), order in euler_order()) {
+        assert_holds(laws::euler_angles_give_back_the_rotation(q, order));
+    }
+
+    #[test]
+    fn law_euler_angles_at_gimbal_lock(a in -PI..PI, c in -PI..PI, up in any::<bool>(), order in euler_order()) {
+        let b = if up { core::f32::consts::FRAC_PI_2 } else { -core::f32::consts::FRAC_PI_2 };
+        assert_holds(laws::euler_angles_give_back_the_rotation(Quat::from_euler(order, a, b, c), order));
+    }
+
+    #[test]
+    fn from_euler_composes_the_axis_rotations_in_order(a in -PI..PI, b in -PI..PI, c in -PI..PI) {
+        let q = Quat::from_euler(EulerRot::ZYX, a, b, c);
+        let by_hand = Quat::from_rotation_z(a) * Quat::from_rotation_y(b) * Quat::from_rotation_x(c);
+        prop_assert!(q.angle_to(by_hand) <= 2.0 * accuracy::EULER_MAX_ANGLE_ERROR + 2.0 * MUL_MAX_ANGLE_ERROR);
+        let q = Quat::from_euler(EulerRot::XZY, a, b, c);
+        let by_hand = Quat::from_rotation_x(a) * Quat::from_rotation_z(b) * Quat::from_rotation_y(c);
+        prop_assert!(q.angle_to(by_hand) <= 2.0 * accuracy::EULER_MAX_ANGLE_ERROR + 2.0 * MUL_MAX_ANGLE_ERROR);
+    }
+
+    #[test]
+    fn law_from_matrix_inverts_from_quat(q in unit_quat()) {
+        assert_holds(laws::from_matrix_inverts_from_quat(q));
+    }
+
+    #[test]
+    fn from_matrix_reads_the_rotation_of_a_rigid_matrix(a in rig_tform()) {
+        let r = Quat::from_matrix(Matrix4::from(a));
+        prop_assert!(r.angle_to(a.r) <= 2.0 * accuracy::FROM_MATRIX_MAX_ANGLE_ERROR + 8.0 * MATRIX_ENTRY_ERROR);
+    }
+
+    #[test]
+    fn law_rotation_arc_takes_from_to_to(a in vec3(), b in vec3(), nudge in vec3(), opposite in any::<bool>()) {
+        prop_assume!(a.norm() > 1e-3 && b.norm() > 1e-3);
+        assert_holds(laws::rotation_arc_takes_from_to_to(a, b));
+        // Nearly the same and nearly opposite directions.
+        let near = a * if opposite { -2.0 } else { 3.0 } + nudge * 1e-6;
+        assert_holds(laws::rotation_arc_takes_from_to_to(a, near));
+    }
+
+    #[test]
+    fn rotation_arc_is_left_invariant_in_its_directions(a in vec3(), b in vec3(), w in unit_quat()) {
+        // Turning both directions by w turns the arc by w: q' = w q w^-1.
+        prop_assume!(a.norm() > 1e-3 && b.norm() > 1e-3);
+        prop_assume!(a.normalize().dot(b.normalize()) > -0.9);
+        let q = Quat::from_rotation_arc(a, b);
+        let turned = Quat::from_rotation_arc(w * a, w * b);
+        prop_assert!(turned.angle_to(w * q * w.inv()) <= 8.0 * accuracy::ROTATION_ARC_MAX_ERROR + 4.0 * ROTATE_MAX_REL_ERROR);
+    }
+
+    #[test]
+    fn look_at_sees_the_target_straight_ahead(eye in vec3(), target in vec3(), up in vec3()) {
+        let sight = target - eye;
+        prop_assume!(sight.norm() > 1e-2 && up.norm() > 1e-3);
+        prop_assume!(up.normalize().cross(sight.normalize()).norm() > 0.1);
+        let e = RigTForm::look_at(eye, target, up);
+        let seen = e.inv().transform_point(target);
+        prop_assert!(close(seen, Cvec3::new(0.0, 0.0, -sight.norm()), 8.0 * ROTATE_MAX_REL_ERROR + 4.0 * accuracy::LOOK_AT_MAX_ANGLE_ERROR));
+        // y is on the side of up, and x is perpendicular to it.
+        let (x, y) = (e.transform_vector(Cvec3::X), e.transform_vector(Cvec3::Y));
+        prop_assert!(y.dot(up) > 0.0);
+        prop_assert!(x.dot(up).abs() <= 4.0 * accuracy::LOOK_AT_MAX_ANGLE_ERROR * up.norm());
+    }
+
+    #[test]
+    fn determinant_is_multiplicative_and_one_for_rigid_motions(a in rig_tform(), s in vec3()) {
+        prop_assume!([s.x, s.y, s.z].iter().all(|c| c.abs() > 1e-2));
+        let m = Matrix4::from(a);
+        let k = Matrix4::from_scale(s);
+        prop_assert!((m.determinant() - 1.0).abs() <= 8.0 * MATRIX_ENTRY_ERROR);
+        let product = (m * k).determinant();
+        let scale = s.x * s.y * s.z;
+        prop_assert!((product - scale).abs() <= 16.0 * MATRIX_ENTRY_ERROR * scale.abs());
+    }
+
+    #[test]
+    fn transform_point_and_vector_match_the_homogeneous_product(a in rig_tform(), b in rig_tform(), c in vec3()) {
+        prop_assert_eq!(a.transform_point(c), (a * Cvec4::from_point(c)).xyz());
+        prop_assert_eq!(a.transform_vector(c), (a * Cvec4::from_vector(c)).xyz());
+        let mut ab = a;
+        ab *= b;
+        prop_assert_eq!(ab, a * b);
+        prop_assert!(close(ab.transform_point(c), a.transform_point(b.transform_point(c)), 4.0 * ROTATE_MAX_REL_ERROR + 2.0 * MUL_MAX_ANGLE_ERROR));
+    }
+}
+
+// With `fast-math`, micromath's kernels are off by up to 2.8e-2 rad
+// (`CATMULL_ROM_MAX_ANGLE_ERROR`): far more than a difference over 1/256 of
+// a key can tell from a turn, so the velocity checks run on the default
+// backend only.
+#[cfg(not(feature = "fast-math"))]
+/// The angular velocity jump, in rad per unit of `t`, of `path` at `s`:
+/// the two one-sided velocities apart.
+fn velocity_jump(path: impl Fn(f32) -> Quat + Copy, s: f32) -> f64 {
+    let before = testkit::catmull_rom::one_sided_angular_velocity(path, s, -1.0);
+    let after = testkit::catmull_rom::one_sided_angular_velocity(path, s, 1.0);
+    (after - before).norm()
+}
+
+/// Piecewise slerp through `keys`, key `i` at `t = i`.
+#[cfg(not(feature = "fast-math"))]
+fn piecewise_slerp(keys: &[Quat], t: f32) -> Quat {
+    let i = (t.max(0.0) as usize).min(keys.len() - 2);
+    keys[i].slerp(keys[i + 1], t - i as f32)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(500))]
+
+    // Catmull-Rom splines on keyframes of a random walk (neighbours up to
+    // 1.5 rad apart), the laws first.
+
+    #[test]
+    fn law_catmull_rom_passes_through_its_keys_and_is_unit(walk in key_walk(5), t in -1.0f32..5.0, i in 0usize..5) {
+        let keys: Vec<Quat> = walk.iter().map(|k| k.r).collect();
+        assert_holds(laws::catmull_rom_is_the_key_at_and_beyond_each_key(&keys, i as f32));
+        assert_holds(laws::catmull_rom_is_the_key_at_and_beyond_each_key(&keys, t - 10.0));
+        assert_holds(laws::catmull_rom_is_unit(&keys, t));
+    }
+
+    #[test]
+    fn law_catmull_rom_is_left_invariant(w in unit_quat(), walk in key_walk(4), t in 0.0f32..3.0) {
+        let keys = [walk[0].r, walk[1].r, walk[2].r, walk[3].r];
+        assert_holds(laws::catmull_rom_is_left_invariant(w, keys, t));
+    }
+
+    #[test]
+    fn law_catmull_rom_of_two_keys_follows_the_slerp_path(walk in key_walk(2), t in 0.0f32..1.0) {
+        assert_holds(laws::catmull_rom_of_two_keys_follows_the_slerp_path(walk[0].r, walk[1].r, t));
+    }
+
+    #[test]
+    fn law_catmull_rom_translation_is_the_cubic(walk in key_walk(5), t in -1.0f32..5.0) {
+        assert_holds(laws::catmull_rom_translation_is_the_cubic(&walk, t));
+    }
+
+    #[cfg(not(feature = "fast-math"))]
+    #[test]
+    fn catmull_rom_angular_velocity_is_continuous_at_every_key(walk in key_walk(5)) {
+        let keys: Vec<Quat> = walk.iter().map(|k| k.r).collect();
+        let spline = |t: f32| Quat::catmull_rom(&keys, t);
+        for i in 1..4 {
+            let jump = velocity_jump(spline, i as f32);
+            // The one-sided differences' truncation (h^2 times the third
+            // derivative) and f32 rounding divided by h, measured up to
+            // 2.4e-4; the velocities themselves are up to about 2 rad per
+            // unit of t, and slerp key to key jumps by as much.
+            prop_assert!(jump <= 1e-3, "key {}: jump {:e}", i, jump);
+        }
+    }
+
+    #[test]
+    fn catmull_rom_of_keys_written_as_q_or_minus_q_is_the_same_motion(walk in key_walk(5), signs in prop::array::uniform5(any::<bool>()), t in 0.0f32..4.0) {
+        let keys: Vec<Quat> = walk.iter().map(|k| k.r).collect();
+        let flipped: Vec<Quat> = keys.iter().zip(signs).map(|(&q, s)| if s { -q } else { q }).collect();
+        let (a, b) = (Quat::catmull_rom(&keys, t), Quat::catmull_rom(&flipped, t));
+        prop_assert!(a.angle_to(b) <= 1e-6, "{:?} {:?}", a, b);
+        let frames: Vec<RigTForm> = walk.iter().zip(&flipped).map(|(k, &r)| RigTForm::new(k.t, r)).collect();
+        let (f, g) = (RigTForm::catmull_rom(&walk, t), RigTForm::catmull_rom(&frames, t));
+        prop_assert_eq!(f.t, g.t);
+        prop_assert!(f.r.angle_to(g.r) <= 1e-6);
+        prop_assert!(f.r.angle_to(a) <= 1e-6);
+    }
+}
+
+#[cfg(not(feature = "fast-math"))]
+#[test]
+fn piecewise_slerp_jumps_at_the_keys_where_catmull_rom_does_not() {
+    // A quarter turn about z, then one about x: slerp key to key changes
+    // axis at once at the middle key.
+    let keys = [
+        Quat::IDENTITY,
+        Quat::from_rotation_z(PI / 2.0),
+        Quat::from_rotation_x(PI / 2.0) * Quat::from_rotation_z(PI / 2.0),
+    ];
+    let slerp_jump = velocity_jump(|t| piecewise_slerp(&keys, t), 1.0);
+    let spline_jump = velocity_jump(|t| Quat::catmull_rom(&keys, t), 1.0);
+    // Two velocities of pi/2 at right angles: a jump of pi/sqrt(2).
+    assert!(
+        (slerp_jump - core::f64::consts::PI / 2f64.sqrt()).abs() < 1e-3,
+        "{slerp_jump}"
+    );
+    assert!(spline_jump < 1e-3, "{spline_jump}");
 }
 
 /// Pairs for the slice laws: random unit pairs mixed with slerp's edge

@@ -117,6 +117,9 @@ struct Prepared<Q, V, T> {
     qv: Vec<(Q, V)>,
     qa: Vec<(Q, f32)>,
     qqa: Vec<(Q, Q, f32)>,
+    /// Four rotations (the keys of a spline, or the control points of its
+    /// segment) and a parameter in [0, 1].
+    q4a: Vec<([Q; 4], f32)>,
     tf: Vec<T>,
     tf_b: Vec<T>,
     tf2: Vec<(T, T)>,
@@ -153,6 +156,12 @@ impl<Q: Copy, V: Copy, T: Copy> Prepared<Q, V, T> {
             qv: q.iter().zip(&v).map(|(&a, &v)| (a, v)).collect(),
             qa: q.iter().zip(t).map(|(&a, &t)| (a, t)).collect(),
             qqa: (0..N).map(|i| (q[i], b[i], t[i])).collect(),
+            q4a: (0..N)
+                .map(|i| {
+                    let j = (i + 1) % N;
+                    ([q[i], b[i], q[j], b[j]], t[i])
+                })
+                .collect(),
             tf2: tf.iter().zip(&tf_b).map(|(&a, &b)| (a, b)).collect(),
             tfv: tf.iter().zip(&u).map(|(&a, &u)| (a, u)).collect(),
             tfa: (0..N).map(|i| (tf[i], tf_b[i], t[i])).collect(),
@@ -182,6 +191,12 @@ macro_rules! glam_benches {
         run($c, "normalize", name, &p.q, |q| q.normalize());
         run($c, "slerp", name, &p.qqa, |(a, b, t)| a.slerp(b, t));
         run($c, "nlerp", name, &p.qqa, |(a, b, t)| a.lerp(b, t));
+        // No spline in glam: the nearest equivalent is de Casteljau's six
+        // slerps over four control points, without making them from keys.
+        run($c, "catmull_rom", name, &p.q4a, |([p0, p1, p2, p3], u)| {
+            let (a, b, c) = (p0.slerp(p1, u), p1.slerp(p2, u), p2.slerp(p3, u));
+            a.slerp(b, u).slerp(b.slerp(c, u), u)
+        });
         run(
             $c,
             "RigTForm * RigTForm",
@@ -276,6 +291,10 @@ fn quat_ops(c: &mut Criterion) {
         run(jobs, "slerp", name, &p.qqa, |(a, b, t)| a.slerp(b, t));
         run(jobs, "nlerp", name, &p.qqa, |(a, b, t)| a.nlerp(b, t));
         run(jobs, "blend of 4", name, blend4, |e| Quat::blend(&e));
+        // In the middle segment of the four keys, with four neighbours.
+        run(jobs, "catmull_rom", name, &p.q4a, |(keys, t)| {
+            Quat::catmull_rom(&keys, 1.0 + t)
+        });
         run(jobs, "RigTForm * RigTForm", name, &p.tf2, |(a, b)| a * b);
         run(jobs, "RigTForm inv", name, &p.tf, RigTForm::inv);
         run(jobs, "RigTForm * point", name, tfc, |(a, p)| a * p);
@@ -316,7 +335,7 @@ fn quat_ops(c: &mut Criterion) {
 /// The operations, in the order they are run and tabulated (`cargo xtask
 /// perf-report` takes the performance page's rows in the order `--list` prints
 /// them).
-const OPS: [&str; 18] = [
+const OPS: [&str; 19] = [
     "q*q",
     "q*q renormalized",
     "rotate Cvec3",
@@ -327,6 +346,7 @@ const OPS: [&str; 18] = [
     "slerp",
     "nlerp",
     "blend of 4",
+    "catmull_rom",
     "RigTForm * RigTForm",
     "RigTForm inv",
     "RigTForm * point",
@@ -363,6 +383,18 @@ fn peers(jobs: &mut Vec<Job>, inp: &Inputs) {
         run(jobs, "pow", name, &p.qa, |(q, t)| q.powf(t));
         run(jobs, "slerp", name, &p.qqa, |(a, b, t)| a.slerp(&b, t));
         run(jobs, "nlerp", name, &p.qqa, |(a, b, t)| a.nlerp(&b, t));
+        // No spline either: de Casteljau's six slerps, as for glam.
+        run(
+            jobs,
+            "catmull_rom",
+            name,
+            &p.q4a,
+            |([p0, p1, p2, p3], u)| {
+                let (a, b, c) = (p0.slerp(&p1, u), p1.slerp(&p2, u), p2.slerp(&p3, u));
+                let (ab, bc) = (a.slerp(&b, u), b.slerp(&c, u));
+                ab.slerp(&bc, u)
+            },
+        );
         run(jobs, "RigTForm * RigTForm", name, &p.tf2, |(a, b)| a * b);
         run(jobs, "RigTForm inv", name, &p.tf, |a| a.inverse());
         run(jobs, "RigTForm * point", name, &p.tfv, |(a, v)| {
@@ -445,7 +477,7 @@ fn peers(jobs: &mut Vec<Job>, inp: &Inputs) {
 }
 
 fn config() -> Criterion {
-    // 18 operations, up to 6 libraries each, about 3 s per benchmark: the
+    // 19 operations, up to 6 libraries each, about 3 s per benchmark: the
     // median of 30 samples of 1,024 calls, for ratios on a shared machine.
     Criterion::default()
         .sample_size(30)

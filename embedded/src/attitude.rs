@@ -1,12 +1,15 @@
 //! The attitude module on target: the exponential map against `pow`, gyro
 //! integration, the smoother's time constant, and the orientation filter's
-//! update on synthetic samples (inclination, rest bias, heading, bad input).
+//! update on synthetic samples (inclination, rest bias, heading, bad input,
+//! recovery after the gyro range), and the axes alignment and calibration.
 
 use rigtform::accuracy::{
     ATAN2_MAX_ABS_ERROR, EXP_LOG_POW_MAX_ANGLE_ERROR, INTEGRATE_STEP_MAX_ANGLE_ERROR,
     SMOOTHER_DECAY_MAX_ERROR,
 };
-use rigtform::attitude::{FilterParams, OrientationFilter, Smoother};
+use rigtform::attitude::{
+    AxesAlignment, Axis, FilterParams, MagneticCalibration, OrientationFilter, Smoother,
+};
 use rigtform::{Cvec3, Quat};
 use rigtform_proofs::draw::Draws;
 use rigtform_proofs::laws::Violation;
@@ -114,5 +117,68 @@ pub fn check_all(t: &mut Tally, draws: u32) {
         let bad_dt = f.update(Cvec3::ZERO, acc, f32::NAN);
         let ok = !nan.is_finite() && !bad_dt.is_finite() && f.attitude() == before;
         within("filter bad input", if ok { 0.0 } else { 1.0 }, 0.0, 2)
+    });
+    t.check("filter_recovers_after_the_gyro_range_and_flags_it", || {
+        // A 40 rad/s spin about x for half a second, read by a gyro of
+        // 2000 °/s that clips, then still: recovered 2 s later.
+        let range = 34.906_586;
+        let params = FilterParams {
+            gyro_range: range,
+            ..FilterParams::DEFAULT
+        };
+        let mut f = OrientationFilter::new(params);
+        let (dt, up) = (0.002, Cvec3::new(0.0, 0.0, 9.81));
+        let mut truth = Quat::IDENTITY;
+        for _ in 0..1000 {
+            f.update(Cvec3::ZERO, up, dt);
+        }
+        let mut saturated = false;
+        for _ in 0..250 {
+            truth = truth.integrate(Cvec3::new(40.0, 0.0, 0.0), dt);
+            f.update(Cvec3::new(range, 0.0, 0.0), truth.inv() * up, dt);
+            saturated |= f.diagnostics().gyro_saturated;
+        }
+        for _ in 0..1000 {
+            f.update(Cvec3::ZERO, truth.inv() * up, dt);
+        }
+        let d = f.diagnostics();
+        let error = f.attitude().inv() * Cvec3::Z - truth.inv() * Cvec3::Z;
+        let flags_ok = saturated && d.recovering && !d.gyro_saturated;
+        within(
+            "filter recovery (up vector error)",
+            if flags_ok { error.norm().into() } else { 1.0 },
+            0.01,
+            1,
+        )
+    });
+    t.check("axes_alignment_and_calibration_undo_a_mounting", || {
+        // Every one of the 24 mountings turns a reading without changing
+        // its length, and the calibration removes a hard-iron offset.
+        let field = Cvec3::new(3.0, 16.0, -41.0);
+        let mag = MagneticCalibration {
+            hard_iron: Cvec3::new(20.0, -5.0, 8.0),
+            ..MagneticCalibration::IDENTITY
+        };
+        let axes = [
+            Axis::PosX,
+            Axis::NegX,
+            Axis::PosY,
+            Axis::NegY,
+            Axis::PosZ,
+            Axis::NegZ,
+        ];
+        let mut worst: f32 = 0.0;
+        let mut count = 0;
+        for x in axes {
+            for y in axes {
+                if let Some(a) = AxesAlignment::new(x, y) {
+                    let v = a.apply(mag.apply(field + mag.hard_iron));
+                    worst = worst.max((v.norm() - field.norm()).abs());
+                    count += 1;
+                }
+            }
+        }
+        let error = if count == 24 { worst } else { 1.0 };
+        within("alignment keeps lengths", error.into(), 0.0, count)
     });
 }

@@ -96,6 +96,38 @@ pub fn rigtform_interpolate(x: &Input, o: &mut Output) {
     let (a, b) = rig(x);
     rig_out(o, a.interpolate(b, x.t));
 }
+/// Four keys from the input, for the splines: `a`, `b` and the same two
+/// with their components rotated (still unit, other rotations), so that a
+/// segment between the middle keys has four distinct neighbours. Moves
+/// only: no arithmetic beyond the spline's own.
+fn keys(x: &Input) -> [Quat; 4] {
+    let [aw, ax, ay, az] = x.a;
+    let [bw, bx, by, bz] = x.b;
+    [
+        quat(x.a),
+        quat(x.b),
+        Quat::new(ax, ay, az, aw),
+        Quat::new(by, bz, bw, bx),
+    ]
+}
+/// One evaluation inside the middle segment of four keys.
+pub fn rigtform_catmull_rom(x: &Input, o: &mut Output) {
+    q_out(o, Quat::catmull_rom(&keys(x), 1.0 + x.t));
+}
+/// The same for rigid body transforms, the translations `u`, `v`, `v`
+/// and `u` swizzled alike.
+pub fn rigtform_rig_catmull_rom(x: &Input, o: &mut Output) {
+    let r = keys(x);
+    let ([ux, uy, uz], [vx, vy, vz]) = (x.u, x.v);
+    let t = [
+        vec3(x.u),
+        vec3(x.v),
+        Cvec3::new(uy, uz, ux),
+        Cvec3::new(vz, vx, vy),
+    ];
+    let frames: [RigTForm; 4] = core::array::from_fn(|i| RigTForm::new(t[i], r[i]));
+    rig_out(o, RigTForm::catmull_rom(&frames, 1.0 + x.t));
+}
 pub fn rigtform_matrix(x: &Input, o: &mut Output) {
     put(o, &Matrix4::from(rig(x).0).to_cols_array());
 }
@@ -128,6 +160,16 @@ pub fn glam_interpolate(x: &Input, o: &mut Output) {
     let (r0, r1) = (glam_quat(x.a), glam_quat(x.b));
     let (t, r) = (t0.lerp(t1, x.t), r0.slerp(r1, x.t));
     put(o, &[t.x, t.y, t.z, r.w, r.x, r.y, r.z]);
+}
+/// glam has no spline: its nearest equivalent is the evaluation alone,
+/// de Casteljau's six slerps over four rotations given as control points
+/// (the keys of `rigtform_catmull_rom`), without the two powers that make
+/// control points from keys.
+pub fn glam_six_slerps(x: &Input, o: &mut Output) {
+    let [p0, p1, p2, p3] = keys(x).map(|q| glam_quat([q.w, q.x, q.y, q.z]));
+    let u = x.t;
+    let (a, b, c) = (p0.slerp(p1, u), p1.slerp(p2, u), p2.slerp(p3, u));
+    glam_out(o, a.slerp(b, u).slerp(b.slerp(c, u), u));
 }
 pub fn glam_matrix(x: &Input, o: &mut Output) {
     let m = glam::Mat4::from_rotation_translation(glam_quat(x.a), glam::Vec3::from_array(x.u));
@@ -263,6 +305,9 @@ pub const OPS: &[Entry] = &[
     entry!("RigTForm interpolate", "rigtform", rigtform_interpolate),
     entry!("RigTForm interpolate", "glam", glam_interpolate),
     entry!("RigTForm interpolate", "nalgebra", nalgebra_interpolate),
+    entry!("catmull_rom", "rigtform", rigtform_catmull_rom),
+    entry!("catmull_rom", "glam", glam_six_slerps),
+    entry!("RigTForm catmull_rom", "rigtform", rigtform_rig_catmull_rom),
     entry!("Matrix4 from RigTForm", "rigtform", rigtform_matrix),
     entry!("Matrix4 from RigTForm", "glam", glam_matrix),
     entry!("Matrix4 from RigTForm", "nalgebra", nalgebra_matrix),

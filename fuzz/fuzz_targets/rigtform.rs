@@ -1,7 +1,8 @@
 //! `RigTForm` on raw bit patterns: product with the inverse, inverse of the
 //! inverse, agreement with `Matrix4::inverse` and with the matrix's action
 //! on points and vectors, interpolation exact at zero, `interpolate_slice`
-//! equal to `interpolate` bit for bit, and no panic on anything.
+//! equal to `interpolate` bit for bit, the spline's translation as the
+//! cubic, and no panic on anything.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -21,6 +22,8 @@ struct Input {
 
 /// 2^20: the laws' bound on translations for the matrix comparison.
 const LIMIT: f32 = 1_048_576.0;
+/// 2^100: the spline's translation law's bound on translations.
+const SPLINE_LIMIT: f32 = 1.267_650_6e30;
 
 fn vec3([x, y, z]: [f32; 3]) -> Cvec3 {
     Cvec3::new(x, y, z)
@@ -52,6 +55,15 @@ fuzz_target!(|input: Input| {
         &[b, a, a],
         input.alpha,
     ));
+    let _ = RigTForm::catmull_rom(&[a, b, a * b], input.alpha);
+    let spline_ok = |v: Cvec3| [v.x, v.y, v.z].iter().all(|c| c.abs() <= SPLINE_LIMIT);
+    if input.alpha.is_finite() && [a.t, b.t, p].into_iter().all(spline_ok) {
+        let keys = [a, b, RigTForm::new(p, b.r)];
+        assert_holds(laws::catmull_rom_translation_is_the_cubic(
+            &keys,
+            input.alpha,
+        ));
+    }
 
     let zero = Quat::new(0.0, 0.0, 0.0, 0.0);
     if !(a.r.is_finite() && a.r != zero && within_limit(a.t) && within_limit(b.t)) {

@@ -1,8 +1,9 @@
-//! `slerp`, `nlerp`, `blend` and `slerp_slice` on raw bit patterns
-//! (contract item 3): unit results for unit inputs and every finite alpha,
-//! exactness at alpha = 0, the short way at constant angular velocity, the
-//! rotation of the notes' formula in `f64` for alpha in [-1, 2], NaN out for
-//! NaN in, the slice equal to slerp bit for bit, and no panic on anything.
+//! `slerp`, `nlerp`, `blend`, `slerp_slice` and `Quat::catmull_rom` on raw
+//! bit patterns (contract item 3): unit results for unit inputs and every
+//! finite alpha, exactness at alpha = 0, the short way at constant angular
+//! velocity, the rotation of the notes' formula in `f64` for alpha in
+//! [-1, 2], the slice equal to slerp bit for bit, the spline's keys and
+//! left invariance, NaN out for NaN in, and no panic on anything.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -55,6 +56,17 @@ fuzz_target!(|input: Input| {
     assert_holds(laws::slerp_slice_is_slerp_bit_for_bit(
         &starts, &ends, alpha,
     ));
+    // The spline through a, b, c at alpha: the keys themselves at whole
+    // alpha and beyond the ends, whatever their bits.
+    let keys = [a, b, c];
+    let _ = Quat::catmull_rom(&keys, alpha);
+    for t in [alpha.floor(), alpha - 3.0, alpha + 3.0, f32::NAN] {
+        if !(0.0 < t && t < 2.0) || t == 1.0 || t.is_nan() {
+            assert_holds(laws::catmull_rom_is_the_key_at_and_beyond_each_key(
+                &keys, t,
+            ));
+        }
+    }
     if !(a.is_finite() && b.is_finite() && alpha.is_finite()) {
         assert_holds(laws::slerp_of_non_finite_is_nan(a, b, alpha));
     }
@@ -79,6 +91,20 @@ fuzz_target!(|input: Input| {
     if (0.0..=1.0).contains(&alpha) {
         assert_holds(laws::slerp_turns_by_alpha_times_the_angle(ua, ub, alpha));
         assert_holds(laws::nlerp_is_unit(ua, ub, alpha));
+    }
+    if !alpha.is_nan() {
+        assert_holds(laws::catmull_rom_is_unit(&[ua, ub, uc], alpha));
+    }
+    // The laws that ask for neighbours at most 1.5 rad apart.
+    let close = ua.angle_to(ub) <= 1.5 && ub.angle_to(uc) <= 1.5;
+    if close && alpha.is_finite() {
+        assert_holds(laws::catmull_rom_is_left_invariant(ua, [ub, uc, ub], alpha));
+        assert_holds(laws::catmull_rom_is_left_invariant(uc, [ua, ub, uc], alpha));
+    }
+    if ua.angle_to(ub) <= 3.0 && alpha.is_finite() {
+        assert_holds(laws::catmull_rom_of_two_keys_follows_the_slerp_path(
+            ua, ub, alpha,
+        ));
     }
     if input.weights.iter().all(|w| w.abs() <= LIMIT) {
         assert_holds(laws::blend_is_unit_or_identity(&[

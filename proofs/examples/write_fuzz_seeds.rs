@@ -44,7 +44,8 @@ fn main() -> std::io::Result<()> {
     let mut slerp = Vec::new();
     let mut rigid = Vec::new();
     let mut matrix = Vec::new();
-    for e in EDGE_F32 {
+    let mut constructors = Vec::new();
+    for (i, e) in EDGE_F32.into_iter().enumerate() {
         // The atan2 edge cases: w itself, a tiny or huge vector part beside
         // w = +-1 or 0, every component alike, and e as the exponent.
         pow.push(bytes(&[e, 0.0, 0.0, 0.0, 0.5]));
@@ -90,10 +91,55 @@ fn main() -> std::io::Result<()> {
             matrix.push(bytes(&m));
         }
         matrix.push(bytes(&[e; 16]));
+        // Euler angles at gimbal lock and of an edge rotation, opposite and
+        // edge directions, and an edge entry in a rotation matrix; the
+        // order byte cycles through the six orders.
+        let lock = core::f32::consts::FRAC_PI_2;
+        let order = [u8::try_from(i % 6).unwrap_or(0)];
+        let identity = [
+            1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+        ];
+        for (q, angles, from, to, up) in [
+            (
+                [e, 0.5, 0.5, 0.5],
+                [0.3, lock, e],
+                [1.0, 0.0, 0.0],
+                [-1.0, 0.0, 0.0],
+                [0.0, 1.0, 0.0],
+            ),
+            (
+                [0.5, -0.5, 0.5, e],
+                [e, -lock, 0.2],
+                [e, 1.0, 2.0],
+                [-e, -1.0, -2.0],
+                [e, e, e],
+            ),
+            (
+                [0.0, 0.0, e, 1.0],
+                [1.0, e, 1.0],
+                [0.0, 0.0, e],
+                [e, 0.0, 1.0],
+                [0.0, 0.0, 1.0],
+            ),
+        ] {
+            let mut m = identity;
+            m[i % 11] = e;
+            constructors.push(
+                [
+                    bytes(&q),
+                    bytes(&angles),
+                    order.to_vec(),
+                    bytes(&[from, to, up].concat()),
+                    bytes(&m),
+                ]
+                .concat(),
+            );
+        }
     }
     write("pow", pow)?;
     write("slerp", slerp)?;
     write("rigtform", rigid)?;
     write("matrix", matrix)?;
+    write("constructors", constructors)?;
     Ok(())
 }

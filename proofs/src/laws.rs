@@ -19,6 +19,12 @@
 use rigtform::accuracy::{INVERSE_MAX_REL_ERROR, ROTATE_MAX_REL_ERROR, UNIT_NORM_ERROR};
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 
+mod constructors;
+pub use constructors::{
+    euler_angles_give_back_the_rotation, from_matrix_inverts_from_quat,
+    rotation_arc_takes_from_to_to,
+};
+
 /// A law that did not hold: its name, the measured quantity and its bound
 /// (both `NaN`-free unless the result itself was `NaN`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -580,6 +586,138 @@ pub fn matrix_inverse_is_none_or_finite(m: Matrix4) -> Verdict {
     yes_or_no("matrix_inverse_is_none_or_finite", inverse_ok && normal_ok)
 }
 
+/// The Catmull-Rom spline is each key at that key, bit for bit, and the
+/// end keys beyond the ends; a NaN `t` gives [`Quat::NAN`], no keys
+/// [`Quat::IDENTITY`]. Nothing is computed on this path but the place of
+/// `t`, so it holds for any bits of the keys.
+///
+/// Preconditions: `t` NaN, a whole number, or outside `(0, keys.len() - 1)`.
+pub fn catmull_rom_is_the_key_at_and_beyond_each_key(keys: &[Quat], t: f32) -> Verdict {
+    let law = "catmull_rom_is_the_key_at_and_beyond_each_key";
+    let got = Quat::catmull_rom(keys, t);
+    let Some(last) = keys.len().checked_sub(1) else {
+        return yes_or_no(law, same_bits(got, Quat::IDENTITY));
+    };
+    if t.is_nan() {
+        return yes_or_no(law, is_nan_quat(got));
+    }
+    let i = if t <= 0.0 {
+        0
+    } else if t >= last as f32 {
+        last
+    } else {
+        t as usize
+    };
+    yes_or_no(law, keys.get(i).is_some_and(|&k| same_bits(got, k)))
+}
+
+/// The Catmull-Rom spline of unit keys is a finite unit quaternion for
+/// every `t` but NaN (it is normalized at the end; at a key it is the
+/// key).
+///
+/// Preconditions: every key unit to [`ONE_STEP_NORM_TOL`], `t` not NaN.
+pub fn catmull_rom_is_unit(keys: &[Quat], t: f32) -> Verdict {
+    let r = Quat::catmull_rom(keys, t);
+    yes_or_no("catmull_rom_is_unit (finite)", r.is_finite())?;
+    within(
+        "catmull_rom_is_unit",
+        (norm2(r) - 1.0).abs(),
+        ONE_STEP_NORM_TOL,
+    )
+}
+
+/// The angle error allowed between two evaluations of the spline that
+/// differ by a rounded product with each key and with the result: four
+/// times the measured spline error (two evaluations, each doubled for the
+/// worst case) and four products.
+fn catmull_rom_tol() -> f64 {
+    4.0 * f64::from(rigtform::accuracy::CATMULL_ROM_MAX_ANGLE_ERROR)
+        + 4.0 * f64::from(rigtform::accuracy::MUL_MAX_ANGLE_ERROR)
+}
+
+/// Left invariance: `catmull_rom(w * keys, t)` is the rotation of
+/// `w * catmull_rom(keys, t)`, for any rotation `w` (the power of a
+/// conjugate is the conjugate of the power, and slerp is left invariant).
+///
+/// Preconditions: `w` and the keys unit to [`ONE_STEP_NORM_TOL`],
+/// neighbouring keys at most 1.5 rad apart (so that no transition the
+/// construction takes the power of is near its conditional negation's
+/// switch at pi), `t` finite.
+pub fn catmull_rom_is_left_invariant<const N: usize>(w: Quat, keys: [Quat; N], t: f32) -> Verdict {
+    let turned = Quat::catmull_rom(&keys.map(|k| w * k), t);
+    let then_turned = w * Quat::catmull_rom(&keys, t);
+    within(
+        "catmull_rom_is_left_invariant",
+        f64::from(turned.angle_to(then_turned)),
+        catmull_rom_tol(),
+    )
+}
+
+/// With two keys the spline follows slerp's path between them (its
+/// control points lie on that great circle), though not at slerp's
+/// constant rate: at each `t` it is `a.slerp(b, s)` for the `s` of the
+/// angle it has turned from `a`.
+///
+/// Preconditions: `a` and `b` unit to [`ONE_STEP_NORM_TOL`], at most 3 rad
+/// apart (away from the tie between the two ways at pi), `t` finite.
+pub fn catmull_rom_of_two_keys_follows_the_slerp_path(a: Quat, b: Quat, t: f32) -> Verdict {
+    let r = Quat::catmull_rom(&[a, b], t);
+    let theta = a.angle_to(b);
+    let s = if theta > 0.0 {
+        a.angle_to(r) / theta
+    } else {
+        0.0
+    };
+    within(
+        "catmull_rom_of_two_keys_follows_the_slerp_path",
+        f64::from(r.angle_to(a.slerp(b, s))),
+        catmull_rom_tol() + slerp_angle_tol(theta.into()),
+    )
+}
+
+/// The translation of `RigTForm::catmull_rom` is the cubic Bezier segment
+/// of the Catmull-Rom control points `c_i + (c_{i+1} - c_{i-1}) / 6` and
+/// `c_{i+1} - (c_{i+2} - c_i) / 6`, evaluated here in f64 in its Bernstein
+/// form: equal to 2^-18 of the largest translation component (a few
+/// roundings in each of the six lerps and the control points).
+///
+/// Preconditions: at least two keys, translations finite with components
+/// at most 2^100 in magnitude, `t` finite.
+pub fn catmull_rom_translation_is_the_cubic(keys: &[RigTForm], t: f32) -> Verdict {
+    let law = "catmull_rom_translation_is_the_cubic";
+    let n = keys.len();
+    let got = RigTForm::catmull_rom(keys, t).t;
+    let last = n.saturating_sub(1);
+    // The segment and the parameter along it, as the spline places t.
+    let t = f64::from(t).clamp(0.0, last as f64);
+    let i = (t as usize).min(last.saturating_sub(1));
+    let u = t - i as f64;
+    let at = |j: usize| {
+        let c = keys.get(j.min(last)).map_or(Cvec3::ZERO, |k| k.t);
+        [c.x, c.y, c.z].map(f64::from)
+    };
+    let (before, from, to, after) = (at(i.saturating_sub(1)), at(i), at(i + 1), at(i + 2));
+    let v = 1.0 - u;
+    let mut largest = 0.0f64;
+    let mut error = 0.0f64;
+    // Once NaN, error stays NaN: `e > NaN` is false.
+    for (k, got) in [got.x, got.y, got.z].into_iter().enumerate() {
+        let p1 = from[k] + (to[k] - before[k]) / 6.0;
+        let p2 = to[k] - (after[k] - from[k]) / 6.0;
+        let want =
+            from[k] * v * v * v + 3.0 * p1 * v * v * u + 3.0 * p2 * v * u * u + to[k] * u * u * u;
+        let e = (f64::from(got) - want).abs();
+        // A NaN is kept (max would drop it), so that it fails.
+        if e.is_nan() || e > error {
+            error = e;
+        }
+        for c in [before[k], from[k], to[k], after[k]] {
+            largest = largest.max(c.abs());
+        }
+    }
+    within(law, error, relative(3.814_697_265_625e-6, largest))
+}
+
 #[cfg(test)]
 mod tests {
     //! Each law must be able to fail: a deliberately wrong input breaks it.
@@ -617,6 +755,30 @@ mod tests {
         );
         assert_eq!(interpolate_is_exact_at_zero(f, RigTForm::IDENTITY), Ok(()));
         assert_eq!(matrix_inverse_is_none_or_finite(Matrix4::IDENTITY), Ok(()));
+        let keys = [a, b, -a, Quat::from_rotation_z(1.0)];
+        for t in [-1.0, 0.0, 1.0, 3.0, 9.0, f32::NAN, f32::INFINITY] {
+            assert_eq!(
+                catmull_rom_is_the_key_at_and_beyond_each_key(&keys, t),
+                Ok(())
+            );
+        }
+        assert_eq!(
+            catmull_rom_is_the_key_at_and_beyond_each_key(&[], 0.5),
+            Ok(())
+        );
+        let walk = [
+            a,
+            Quat::from_rotation_y(1.0) * a,
+            Quat::from_rotation_z(1.2) * a,
+        ];
+        assert_eq!(catmull_rom_is_unit(&walk, 1.3), Ok(()));
+        assert_eq!(catmull_rom_is_left_invariant(b, walk, 0.7), Ok(()));
+        assert_eq!(
+            catmull_rom_of_two_keys_follows_the_slerp_path(a, -b, 0.3),
+            Ok(())
+        );
+        let frames = walk.map(|r| RigTForm::new(Cvec3::new(r.x, 2.0, -r.w), r));
+        assert_eq!(catmull_rom_translation_is_the_cubic(&frames, 1.4), Ok(()));
     }
 
     #[test]
@@ -642,6 +804,17 @@ mod tests {
         assert!(rigid_inverse_matches_matrix_inverse(off).is_err());
         let singular = Matrix4::from_scale(Cvec3::new(1.0, 0.0, 1.0));
         assert_eq!(matrix_inverse_is_none_or_finite(singular), Ok(()));
+        let b = Quat::from_rotation_y(1.0);
+        assert!(catmull_rom_is_the_key_at_and_beyond_each_key(&[a, b], 0.5).is_err());
+        assert!(catmull_rom_is_unit(&[scaled, scaled], 0.0).is_err());
+        assert!(catmull_rom_is_left_invariant(Quat::NAN, [a, b], 0.5).is_err());
+        assert!(catmull_rom_of_two_keys_follows_the_slerp_path(a, Quat::NAN, 0.5).is_err());
+        let far = [
+            Cvec3::new(f32::MAX, 0.0, 0.0),
+            Cvec3::new(-f32::MAX, 0.0, 0.0),
+        ];
+        let far = far.map(|t| RigTForm::new(t, a));
+        assert!(catmull_rom_translation_is_the_cubic(&far, 0.5).is_err());
         let err = product_norm_is_multiplicative(a, Quat::NAN).unwrap_err();
         assert_eq!(err.law, "product_norm_is_multiplicative");
         assert!(err.measured.is_nan());

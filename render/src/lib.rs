@@ -28,9 +28,8 @@
 //! [`scene`] runs the stages, in parallel with `rayon` and with the same
 //! bytes out whatever the number of threads. [`demo`] builds the demo's
 //! animation and pictures on top of it: the staging every panel shares,
-//! the comparison of [`demo::bad_ideas`], its
-//! [`interpolation`](demo::interpolation) methods and
-//! [`euler`](demo::euler) angles.
+//! the comparison of [`demo::bad_ideas`] and its
+//! [`interpolation`](demo::interpolation) methods.
 //!
 //! A *frame* is one picture of the animation (`frames/frame_000.png`).
 //! Where an object is in the world is its [`Placement`]; coordinate frames
@@ -79,7 +78,7 @@ pub use image::Image;
 pub use mesh::Mesh;
 pub use raster::{Cull, DepthPlane, Triangle, MAX_COORDINATE};
 pub use samples::Msaa;
-pub use scene::{Camera, Draw, Scene, Settings, Stats};
+pub use scene::{Camera, Draw, Lens, Scene, Settings, Stats};
 pub use shade::Lighting;
 pub use vertex::{transform_vertices, ClipVertex, Placement, Transforms, ATTRIBUTES};
 pub use viewport::{to_screen, ScreenVertex};

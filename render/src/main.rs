@@ -8,6 +8,7 @@ use std::time::Instant;
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
+use rigtform_render::demo::spline::{self, Keyed, SplineDemo};
 use rigtform_render::demo::{
     contact_sheet, gif_sequence, load_body, sheet_frames, Comparison, Demo,
 };
@@ -58,6 +59,12 @@ struct Args {
     /// Skip the GIF (it is the slowest file to encode).
     #[arg(long)]
     no_gif: bool,
+
+    /// Render the keyframe comparison instead: five keyframes by slerp key
+    /// to key beside the Catmull-Rom spline, over 4 s, and a plot of their
+    /// angular speed (angular_speed.png).
+    #[arg(long, conflicts_with = "comparison")]
+    spline: bool,
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -107,6 +114,7 @@ fn run(args: &Args) -> Result<String, String> {
         ));
     }
     let body = args.obj.as_deref().map(load_body).transpose()?;
+    let spline_demo = args.spline.then(|| SplineDemo::new(body.clone()));
     let demo = Demo::new(args.comparison, body);
     let settings = Settings {
         width: args.size.0,
@@ -136,7 +144,11 @@ fn run(args: &Args) -> Result<String, String> {
         (0..args.frames)
             .into_par_iter()
             .map(|i| {
-                let image = demo.render_frame(Demo::alpha(i, args.frames), &settings);
+                let alpha = Demo::alpha(i, args.frames);
+                let image = match &spline_demo {
+                    Some(s) => s.render_frame(alpha, &settings),
+                    None => demo.render_frame(alpha, &settings),
+                };
                 write_png(&frames_dir.join(format!("frame_{i:03}.png")), &image)
                     .map_err(|e| e.to_string())?;
                 bar.inc(1);
@@ -159,6 +171,19 @@ fn run(args: &Args) -> Result<String, String> {
         frames_dir.display(),
         sheet_path.display()
     );
+    if let Some(s) = &spline_demo {
+        let plot_path = args.out.join("angular_speed.png");
+        write_png(&plot_path, &spline::speed_plot(s.keys(), 640, 320))
+            .map_err(|e| e.to_string())?;
+        written += &format!(", {}", plot_path.display());
+        for method in Keyed::BOTH {
+            let (jump, key) = spline::largest_jump(method, s.keys());
+            println!(
+                "{}: largest angular velocity jump at a key {jump:.3e} rad/s (key {key})",
+                method.title()
+            );
+        }
+    }
     if !args.no_gif {
         let there_and_back = gif_sequence(args.frames);
         let gif_path = args.out.join("animation.gif");

@@ -25,14 +25,30 @@ use crate::viewport::to_screen;
 /// Rows per band, the unit of parallel work.
 pub const BAND_ROWS: u32 = 8;
 
-/// The camera: the eye frame (looking down its -z axis, y up) and the
-/// perspective projection.
+/// How the camera maps the view to the picture.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Lens {
+    /// Perspective (`Matrix4::perspective`): things shrink with distance.
+    Perspective {
+        /// Vertical field of view in radians.
+        fovy: f32,
+    },
+    /// Orthographic (`Matrix4::orthographic`): parallel lines stay
+    /// parallel and sizes do not change with distance.
+    Orthographic {
+        /// Height of the view in world units (its width follows the
+        /// aspect ratio), centred on the line of sight.
+        height: f32,
+    },
+}
+
+/// The camera: the eye frame (looking down its -z axis, y up) and the lens.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
     /// The eye frame, `e = w eyeRbt`.
     pub eye: RigTForm,
-    /// Vertical field of view in radians.
-    pub fovy: f32,
+    /// Perspective or orthographic.
+    pub lens: Lens,
     /// Distance to the near clipping plane (positive).
     pub near: f32,
     /// Distance to the far clipping plane (positive, beyond `near`).
@@ -40,28 +56,45 @@ pub struct Camera {
 }
 
 impl Camera {
-    /// A camera at `position` looking at `target`, its x axis kept
-    /// horizontal (y is up).
+    /// A perspective camera at `position` looking at `target` with a
+    /// vertical field of view of `fovy` radians, its x axis kept horizontal
+    /// (y is up): the eye frame of `RigTForm::look_at`.
     ///
     /// ```
     /// use rigtform::{Cvec3, Cvec4};
     /// use rigtform_render::Camera;
     /// let cam = Camera::looking_at(Cvec3::new(0.0, 3.0, 4.0), Cvec3::ZERO, 0.8);
     /// // The target lies straight ahead, on the eye's -z axis, 5 away.
-    /// let seen = cam.eye.inv() * Cvec4::from_point(Cvec3::ZERO);
-    /// assert!((seen.xyz() - Cvec3::new(0.0, 0.0, -5.0)).norm() < 1e-5);
+    /// let seen = cam.eye.inv().transform_point(Cvec3::ZERO);
+    /// assert!((seen - Cvec3::new(0.0, 0.0, -5.0)).norm() < 1e-5);
     /// ```
     #[must_use]
     pub fn looking_at(position: Cvec3, target: Cvec3, fovy: f32) -> Self {
-        let d = target - position;
-        let yaw = (-d.x).atan2(-d.z);
-        let pitch = d.y.atan2((d.x * d.x + d.z * d.z).sqrt());
-        let r = rigtform::Quat::from_rotation_y(yaw) * rigtform::Quat::from_rotation_x(pitch);
         Self {
-            eye: RigTForm::new(position, r),
-            fovy,
+            eye: RigTForm::look_at(position, target, Cvec3::Y),
+            lens: Lens::Perspective { fovy },
             near: 0.1,
             far: 100.0,
+        }
+    }
+
+    /// The same camera with an orthographic lens showing `height` world
+    /// units from bottom to top.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Cvec4};
+    /// use rigtform_render::{Camera, Lens};
+    /// let cam = Camera::looking_at(Cvec3::new(0.0, 0.0, 5.0), Cvec3::ZERO, 1.0).orthographic(4.0);
+    /// assert_eq!(cam.lens, Lens::Orthographic { height: 4.0 });
+    /// // The top of the view, 2 above the line of sight, at any distance.
+    /// let top = cam.projection(1.0) * Cvec4::new(0.0, 2.0, -30.0, 1.0);
+    /// assert!((top.y / top.w - 1.0).abs() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn orthographic(self, height: f32) -> Self {
+        Self {
+            lens: Lens::Orthographic { height },
+            ..self
         }
     }
 
@@ -76,7 +109,13 @@ impl Camera {
     /// ```
     #[must_use]
     pub fn projection(&self, aspect: f32) -> Matrix4 {
-        Matrix4::perspective(self.fovy, aspect, self.near, self.far)
+        match self.lens {
+            Lens::Perspective { fovy } => Matrix4::perspective(fovy, aspect, self.near, self.far),
+            Lens::Orthographic { height } => {
+                let (h, w) = (0.5 * height, 0.5 * height * aspect);
+                Matrix4::orthographic(-w, w, -h, h, self.near, self.far)
+            }
+        }
     }
 }
 
@@ -261,20 +300,10 @@ mod tests {
         }
     }
 
-    #[test]
-    fn point_projects_onto_the_pixel_computed_by_hand() {
-        // Eye at (0, 0, 10) looking down -z, 90 degree field of view, square
-        // viewport of 101 pixels: the point (2, 1, 0) is 10 in front of the
-        // eye, so at NDC (0.2, 0.1), i.e. pixel x = (0.2 + 1) / 2 * 101 =
-        // 60.6, y = (1 - 0.1) / 2 * 101 = 45.45: pixel (60, 45).
-        let camera = Camera {
-            eye: RigTForm::from_translation(Cvec3::new(0.0, 0.0, 10.0)),
-            fovy: core::f32::consts::FRAC_PI_2,
-            near: 0.5,
-            far: 50.0,
-        };
-        // Half a pixel wide (20 units span 101 pixels): it covers only the
-        // centre of the pixel the point falls in.
+    /// The pixels of a 101 x 101 picture that a tiny cube at `at` covers:
+    /// 0.1 wide, half a pixel where 20 units span the picture, so it covers
+    /// only the centre of the pixel its point falls in.
+    fn pixels_of_a_marker(camera: Camera, at: Cvec3) -> Vec<(u32, u32)> {
         let marker = Mesh::cube(0.1, [1.0; 3]);
         let scene = Scene {
             camera,
@@ -283,22 +312,59 @@ mod tests {
             background: [0.0; 3],
             draws: vec![Draw {
                 mesh: &marker,
-                placement: Placement::Rigid(RigTForm::from_translation(Cvec3::new(2.0, 1.0, 0.0))),
+                placement: Placement::Rigid(RigTForm::from_translation(at)),
                 scale: Cvec3::new(1.0, 1.0, 1.0),
                 tint: [1.0; 3],
             }],
         };
         let (fb, _) = scene.render_samples(&settings(101, 101));
-        let drawn: Vec<(u32, u32)> = (0..101)
+        (0..101)
             .flat_map(|y| (0..101).map(move |x| (x, y)))
             .filter(|&(x, y)| fb.depth(x, y, 0) < 1.0)
-            .collect();
-        assert_eq!(drawn, [(60, 45)]);
+            .collect()
+    }
+
+    #[test]
+    fn point_projects_onto_the_pixel_computed_by_hand() {
+        // Eye at (0, 0, 10) looking down -z, 90 degree field of view, square
+        // viewport of 101 pixels: the point (2, 1, 0) is 10 in front of the
+        // eye, so at NDC (0.2, 0.1), i.e. pixel x = (0.2 + 1) / 2 * 101 =
+        // 60.6, y = (1 - 0.1) / 2 * 101 = 45.45: pixel (60, 45).
+        let camera = Camera {
+            eye: RigTForm::from_translation(Cvec3::new(0.0, 0.0, 10.0)),
+            lens: Lens::Perspective {
+                fovy: core::f32::consts::FRAC_PI_2,
+            },
+            near: 0.5,
+            far: 50.0,
+        };
+        assert_eq!(
+            pixels_of_a_marker(camera, Cvec3::new(2.0, 1.0, 0.0)),
+            [(60, 45)]
+        );
         // The same by the matrices themselves.
         let p = camera.projection(1.0)
             * Matrix4::from(camera.eye.inv())
             * Cvec4::from_point(Cvec3::new(2.0, 1.0, 0.0));
         assert!((p.x / p.w - 0.2).abs() < 1e-6 && (p.y / p.w - 0.1).abs() < 1e-6);
+    }
+
+    #[test]
+    fn orthographic_camera_puts_a_point_on_the_same_pixel_at_any_depth() {
+        // 20 units high on 101 pixels, as the perspective test above sees
+        // its point at distance 10: (2, 1) lands on pixel (60, 45) whether
+        // it is 5 or 40 in front of the eye.
+        let camera = Camera {
+            eye: RigTForm::from_translation(Cvec3::new(0.0, 0.0, 10.0)),
+            lens: Lens::Perspective { fovy: 1.0 },
+            near: 0.5,
+            far: 50.0,
+        }
+        .orthographic(20.0);
+        for z in [5.0, -30.0] {
+            let drawn = pixels_of_a_marker(camera, Cvec3::new(2.0, 1.0, z));
+            assert_eq!(drawn, [(60, 45)], "z = {z}");
+        }
     }
 
     #[test]

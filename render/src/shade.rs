@@ -3,7 +3,7 @@
 //! with the halfway vector `h = normalize(l + v)`, plus a little ambient
 //! light; all in eye coordinates, from the interpolated normal.
 
-use rigtform::{Cvec3, Cvec4, RigTForm};
+use rigtform::{Cvec3, RigTForm};
 
 use crate::vertex::ATTRIBUTES;
 
@@ -36,7 +36,7 @@ impl Lighting {
     pub fn new(eye: RigTForm, lights: [Cvec3; 2], intensity: [f32; 2]) -> Self {
         let to_eye = eye.inv();
         Self {
-            lights: lights.map(|p| (to_eye * Cvec4::from_point(p)).xyz()),
+            lights: lights.map(|p| to_eye.transform_point(p)),
             intensity,
         }
     }

@@ -189,3 +189,41 @@ fn more_sheet_rows_than_frames_is_refused() {
     assert!(stderr(&o).contains("--sheet-rows"));
     assert!(!dir.exists());
 }
+
+#[test]
+fn spline_comparison_writes_two_panels_and_the_speed_plot() {
+    let dir = scratch("spline");
+    let o = run(
+        &dir,
+        "--spline --size 40x30 --frames 3 --sheet-rows 3 --no-gif",
+        &[],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let expected = [
+        "angular_speed.png",
+        "contact_sheet.png",
+        "frames/frame_000.png",
+        "frames/frame_001.png",
+        "frames/frame_002.png",
+    ];
+    assert_eq!(files(&dir), expected);
+    let frame = read_png(&dir.join("frames/frame_001.png")).unwrap();
+    // Two panels of 40 pixels with a 4-pixel gap, under the label bar.
+    assert_eq!(frame.width(), 2 * 40 + 4);
+    assert_eq!(frame.height(), 30 + rigtform_render::demo::LABEL_BAR);
+    let plot = read_png(&dir.join("angular_speed.png")).unwrap();
+    assert_eq!((plot.width(), plot.height()), (640, 320));
+    // Both jumps reported, slerp's in radians per second, the spline's
+    // orders of magnitude smaller.
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    let jumps: Vec<f32> = stdout
+        .lines()
+        .filter_map(|l| l.split("at a key ").nth(1))
+        .filter_map(|rest| rest.split_whitespace().next()?.parse().ok())
+        .collect();
+    assert_eq!(jumps.len(), 2, "{stdout}");
+    assert!(jumps[0] > 1.0 && jumps[1] < 1e-2, "{stdout}");
+    // It picks its own panels: a comparison as well is refused.
+    let o = run(&scratch("spline-both"), "--spline --comparison slerp", &[]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+}

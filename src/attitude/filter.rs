@@ -1,15 +1,24 @@
 //! [`OrientationFilter`]: gyroscope + accelerometer (6D) and + magnetometer
 //! (9D) attitude estimation, with gyro-bias estimation.
 
-use super::low_pass::{low_pass, smoothing_factor};
+use super::low_pass::{butterworth, butterworth_step, low_pass, smoothing_factor};
 use super::rest::RestDetector;
-use super::FilterParams;
+use super::{Diagnostics, FilterParams};
 use crate::float;
 use crate::quat::Quat;
 use crate::vec::Cvec3;
 
 /// Time constant with which the magnetic reference follows the field.
 const MAG_REFERENCE_TAU: f32 = 60.0;
+
+/// The fraction of `gyro_range` from which a reading counts as saturated.
+const SATURATION: f32 = 0.99;
+
+/// The standard deviation of the bias estimate at rest, in rad/s
+/// (0.01 °/s): a MEMS gyro's noise density of about 0.01 °/s/√Hz averaged
+/// over `tau_bias_rest` (3 s) leaves 0.004 °/s, and the bias moves by
+/// about as much again within the low-pass's delay.
+const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 
 /// An orientation filter for gyroscope + accelerometer (6D, [`update`](Self::update))
 /// and gyroscope + accelerometer + magnetometer (9D,
@@ -25,15 +34,18 @@ const MAG_REFERENCE_TAU: f32 = 60.0;
 ///    ([`Quat::integrate`]). It maps the sensor frame into an almost
 ///    inertial frame, which drifts only as slowly as the gyro errors.
 /// 2. The accelerometer, rotated into that frame, goes through a
-///    critically damped second-order low-pass (two first-order stages of
-///    `tau_acc / 2`). In an inertial frame, linear acceleration is the
-///    derivative of velocity, which stays bounded, so the average tends to
-///    gravity: shaking, running and vibration average out, rather than
-///    tilting the estimate as in a filter that trusts each sample's
-///    direction. This is the central idea of VQF (Laidig and Seel,
-///    *VQF: Highly Accurate IMU Orientation Estimation with Bias Estimation
-///    and Magnetic Disturbance Rejection*, Information Fusion 91, 2023),
-///    here in a simpler filter.
+///    second-order Butterworth low-pass with time constant `tau_acc`. In an
+///    inertial frame, linear acceleration is the derivative of velocity,
+///    which stays bounded, so the average tends to gravity: shaking,
+///    running and vibration average out, rather than tilting the estimate
+///    as in a filter that trusts each sample's direction. This is the
+///    central idea of VQF (Laidig and Seel, *VQF: Highly Accurate IMU
+///    Orientation Estimation with Bias Estimation and Magnetic Disturbance
+///    Rejection*, Information Fusion 91, 2023), here in a simpler filter.
+///    The Butterworth has the same delay as two first-order stages of
+///    `tau_acc / 2` (both lag a steady drift by `tau_acc`), but its poles
+///    are `sqrt(2)` times closer to zero, so it passes half the
+///    acceleration at every frequency well above `1 / tau_acc`.
 /// 3. `correction` is then turned, about a horizontal axis, by the
 ///    smallest rotation that makes the averaged vector point up: the
 ///    inclination correction. It is skipped while the averaged magnitude is
@@ -46,12 +58,24 @@ const MAG_REFERENCE_TAU: f32 = 60.0;
 /// 5. Gyro bias: while at rest (rest detection on gyro and accelerometer),
 ///    the bias low-passes the raw gyro. During motion, each inclination
 ///    correction, expressed in the sensor frame, is the drift a bias error
-///    caused; the bias follows it with time constant `tau_bias` (Mahony's
-///    integral term, in time-constant form), when the sample passes the
-///    acceleration gate. As the sensor turns, every sensor axis spends
-///    time horizontal, where the inclination shows its bias. The heading
-///    correction never feeds the bias, so that a magnetic disturbance
-///    cannot corrupt it (nor, through it, the inclination).
+///    caused; the bias follows it as a scalar Kalman filter would, with the
+///    time constant `bias_noise^2 / variance` (never shorter than
+///    `tau_bias`), when the sample passes the acceleration gate. The
+///    correction is taken to the sensor frame by the attitude averaged
+///    through the accelerometer's low-pass (its first two rows, the
+///    earth's horizontal axes in the sensor frame), since the average it
+///    corrects saw the bias through that low-pass: in rotation faster than
+///    `1 / tau_acc` the averaged axes shrink, and so does what the
+///    correction is taken to say about the bias (the measurement model of
+///    VQF's bias estimation, in a scalar filter). The
+///    variance grows with `bias_drift` while the bias is not measured,
+///    falls towards (0.01 °/s)^2 at rest, and shrinks with each motion
+///    update. So a bias just learned at rest is barely moved by the
+///    corrections that linear accelerations cause, while one never seen at
+///    rest is learned from them. As the sensor turns, every sensor axis
+///    spends time horizontal, where the inclination shows its bias. The
+///    heading correction never feeds the bias, so that a magnetic
+///    disturbance cannot corrupt it (nor, through it, the inclination).
 ///
 /// The first sample with a usable accelerometer vector sets the
 /// inclination (the low-pass starts there, as if at rest); with a
@@ -64,15 +88,20 @@ const MAG_REFERENCE_TAU: f32 = 60.0;
 ///
 /// # State and cost
 ///
-/// 156 bytes including the 44 of the parameters (`size_of`, checked by a
-/// test), no allocation. A 6D update costs three quaternion products,
-/// three vector rotations, four normalizations, an atan2, three `exp_m1`
-/// for the smoothing factors (four at rest) and a handful of vector
-/// operations; the magnetometer adds two products, a rotation, an atan2, a
-/// sine-cosine and two `exp_m1`. Executed instructions per update
-/// on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s", LTO, counted
-/// by `cargo xtask filter-cost`, by hand: CI does not check them): 1,351 (6D)
-/// and 1,891 (9D) with the default kernels, 1,353 and 1,856 with `fast-math`.
+/// 240 bytes including the 56 of the parameters (`size_of`, checked by a
+/// test and by `cargo xtask filter-cost` on the target), no allocation. A
+/// 6D update costs three quaternion products, three vector rotations, four
+/// normalizations, an atan2, the low-pass of the accelerometer and of two
+/// rows of the attitude matrix (Taylor series for the factors, or an
+/// `exp_m1` and a sine-cosine where `dt / tau_acc` exceeds 1/16), the
+/// smoothing factors of the rest detector and the bias, and a handful of
+/// vector operations; the magnetometer adds two products, a rotation, an
+/// atan2, a sine-cosine and two smoothing factors. Executed instructions
+/// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
+/// LTO), counted by `cargo xtask filter-cost`, which fails above the
+/// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
+/// state: 1,580 (6D) and 2,086 (9D) with the default kernels, 1,586 and
+/// 2,047 with `fast-math`.
 ///
 /// # Bad input
 ///
@@ -125,9 +154,10 @@ pub struct OrientationFilter {
     strapdown: Quat,
     /// The almost inertial frame to earth: all corrections.
     correction: Quat,
-    /// The two stages of the accelerometer low-pass, in the inertial frame.
-    acc_stage1: Cvec3,
-    acc_stage2: Cvec3,
+    /// The accelerometer low-pass in the inertial frame: its output, and
+    /// its rate of change times `tau_acc`.
+    acc_average: Cvec3,
+    acc_rate: Cvec3,
     /// The gyro bias estimate, rad/s, sensor frame.
     bias: Cvec3,
     rest: RestDetector,
@@ -136,6 +166,18 @@ pub struct OrientationFilter {
     mag_reference: Cvec3,
     /// Whether the inclination has been set from an accelerometer sample.
     initialized: bool,
+    /// The variance of the bias estimate, (rad/s)^2.
+    bias_variance: f32,
+    /// Seconds since the first usable accelerometer sample or the last
+    /// saturated gyro sample: the corrections' time constants are at most
+    /// this.
+    settling: f32,
+    diagnostics: Diagnostics,
+    /// The earth's x and y axes in the sensor frame (the first two rows of
+    /// the attitude's matrix), through the same low-pass as the
+    /// accelerometer, and their rates times `tau_acc`.
+    axes_average: [Cvec3; 2],
+    axes_rate: [Cvec3; 2],
 }
 
 impl OrientationFilter {
@@ -158,12 +200,26 @@ impl OrientationFilter {
             params,
             strapdown: Quat::IDENTITY,
             correction: Quat::IDENTITY,
-            acc_stage1: Cvec3::ZERO,
-            acc_stage2: Cvec3::ZERO,
+            acc_average: Cvec3::ZERO,
+            acc_rate: Cvec3::ZERO,
             bias: Cvec3::ZERO,
             rest: RestDetector::new(),
             mag_reference: Cvec3::NAN,
             initialized: false,
+            bias_variance: params.max_bias * params.max_bias,
+            settling: 0.0,
+            axes_average: [Cvec3::X, Cvec3::Y],
+            axes_rate: [Cvec3::ZERO, Cvec3::ZERO],
+            diagnostics: Diagnostics {
+                acc_error: 0.0,
+                mag_error: 0.0,
+                initialising: true,
+                recovering: false,
+                gyro_saturated: false,
+                resting: false,
+                acc_ignored: false,
+                mag_ignored: false,
+            },
         }
     }
 
@@ -185,10 +241,11 @@ impl OrientationFilter {
     pub fn with_attitude(params: FilterParams, attitude: Quat) -> Self {
         let mut f = Self::new(params);
         f.correction = attitude;
-        let gravity = Cvec3::new(0.0, 0.0, params.gravity);
-        f.acc_stage1 = gravity;
-        f.acc_stage2 = gravity;
+        f.acc_average = Cvec3::new(0.0, 0.0, params.gravity);
+        f.axes_average = horizontal_axes(attitude);
         f.initialized = true;
+        f.settling = f32::INFINITY;
+        f.diagnostics.initialising = false;
         f
     }
 
@@ -327,12 +384,31 @@ impl OrientationFilter {
             self.rest.interrupt();
         }
         let resting = self.is_resting();
+        let saturated = gyr.x.abs().max(gyr.y.abs()).max(gyr.z.abs()) >= SATURATION * p.gyro_range;
+        if saturated {
+            self.settling = 0.0;
+            self.diagnostics.recovering = true;
+        } else if self.initialized {
+            self.settling += dt;
+        }
+        let settled = self.settling >= p.tau_acc;
+        if settled {
+            self.diagnostics.initialising = false;
+            self.diagnostics.recovering = false;
+        }
+        self.diagnostics.gyro_saturated = saturated;
+        self.diagnostics.resting = resting;
+        // The bias estimate's variance grows as the bias wanders, and at
+        // rest falls towards what the raw gyro tells.
+        // The estimate is clipped to max_bias, so its variance stays below
+        // max_bias^2 (which also keeps it finite).
+        self.bias_variance =
+            (self.bias_variance + p.bias_drift * p.bias_drift * dt).min(p.max_bias * p.max_bias);
         if resting {
-            self.set_bias(low_pass(
-                self.bias,
-                gyr,
-                smoothing_factor(dt, p.tau_bias_rest),
-            ));
+            let alpha = smoothing_factor(dt, p.tau_bias_rest);
+            self.set_bias(low_pass(self.bias, gyr, alpha));
+            let rest = REST_BIAS_SIGMA * REST_BIAS_SIGMA;
+            self.bias_variance += (rest - self.bias_variance) * alpha;
         }
 
         self.strapdown = self.strapdown.integrate(gyr - self.bias, dt);
@@ -340,68 +416,102 @@ impl OrientationFilter {
         // The inclination correction in the earth frame, as a rotation
         // vector, for the bias. The heading correction is left out: a
         // magnetic disturbance must not reach the bias either.
+        let factors = butterworth(dt, p.tau_acc.min(self.settling));
+        let first = !self.initialized;
         let drift = match acc {
-            Some(acc) => self.correct_inclination(acc, dt),
-            None => Cvec3::ZERO,
+            Some(acc) => self.correct_inclination(acc, factors),
+            None => None,
         };
-        if let Some(mag) = mag {
-            self.correct_heading(mag, dt);
-        }
+        self.diagnostics.acc_ignored = drift.is_none();
+        let drift = drift.unwrap_or(Cvec3::ZERO);
+        self.diagnostics.acc_error = drift.norm();
+        let heading = mag.map(|mag| self.correct_heading(mag, dt));
+        self.diagnostics.mag_ignored = heading.is_some_and(|h| h.is_none());
+        self.diagnostics.mag_error = heading.flatten().unwrap_or(0.0);
 
         let attitude = self.attitude();
+        if acc.is_some() {
+            // The attitude through the accelerometer's low-pass, in the same
+            // steps (see the bias below).
+            let axes = horizontal_axes(attitude);
+            if first {
+                self.axes_average = axes;
+            }
+            let rows = self.axes_average.iter_mut().zip(&mut self.axes_rate);
+            for ((average, rate), axis) in rows.zip(axes) {
+                (*average, *rate) = butterworth_step(*average, *rate, axis, factors);
+            }
+        }
         let gated = acc.is_some_and(|a| (a.norm() - p.gravity).abs() <= p.acc_gate * p.gravity);
         // The corrections undid a drift of -drift in dt: in the sensor
         // frame, the bias error that would cause it. Faster corrections are
         // no bias (see max_bias).
-        let error = attitude.inv() * drift * (1.0 / dt);
-        if !resting && gated && error.norm() <= p.max_bias {
-            self.set_bias(self.bias - error * smoothing_factor(dt, p.tau_bias));
+        let rate = drift * (1.0 / dt);
+        // The bias error that the average saw is the low-passed attitude's
+        // (the earth's horizontal axes in the sensor frame, averaged as the
+        // accelerometer was), not today's: in fast rotation it averages out,
+        // and so does what the corrections tell of the bias.
+        let [ex, ey] = self.axes_average;
+        let error = ex * rate.x + ey * rate.y;
+        let seen = 0.5 * (ex.norm_squared() + ey.norm_squared());
+        // While settling, the corrections are convergence, not bias.
+        if settled && !resting && gated && rate.norm() <= p.max_bias {
+            // A continuous Kalman update: the gain is variance / noise^2
+            // per second, and the variance shrinks by the same fraction.
+            let variance = self.bias_variance;
+            let tau = (p.bias_noise * p.bias_noise / variance).max(p.tau_bias);
+            // 0 / 0 (no noise, no uncertainty): nothing to learn.
+            let alpha = if tau.is_nan() {
+                0.0
+            } else {
+                smoothing_factor(dt, tau)
+            };
+            self.set_bias(self.bias - error * alpha);
+            self.bias_variance = variance * (1.0 - alpha * seen);
         }
         attitude
     }
 
     /// Averages the accelerometer in the inertial frame and turns the
     /// correction so that the average points up. Returns the correction's
-    /// rotation vector (earth frame).
-    fn correct_inclination(&mut self, acc: Cvec3, dt: f32) -> Cvec3 {
+    /// rotation vector (earth frame; zero for the first sample, which sets
+    /// the inclination), `None` if the average is outside the gate.
+    fn correct_inclination(&mut self, acc: Cvec3, factors: (f32, f32)) -> Option<Cvec3> {
         let p = self.params;
         let inertial = self.strapdown * acc;
         let first = !self.initialized;
         if first {
-            self.acc_stage1 = inertial;
-            self.acc_stage2 = inertial;
+            self.acc_average = inertial;
+            self.acc_rate = Cvec3::ZERO;
             self.initialized = true;
         }
-        let alpha = smoothing_factor(dt, 0.5 * p.tau_acc);
-        let stage1 = low_pass(self.acc_stage1, inertial, alpha);
-        let stage2 = low_pass(self.acc_stage2, stage1, alpha);
-        self.acc_stage1 = stage1;
-        self.acc_stage2 = stage2;
-        if (stage2.norm() - p.gravity).abs() > p.acc_gate * p.gravity {
-            return Cvec3::ZERO;
+        let (average, rate) = butterworth_step(self.acc_average, self.acc_rate, inertial, factors);
+        self.acc_average = average;
+        self.acc_rate = rate;
+        if (average.norm() - p.gravity).abs() > p.acc_gate * p.gravity {
+            return None;
         }
-        let Some(up) = (self.correction * stage2).try_normalize() else {
-            return Cvec3::ZERO;
-        };
+        let up = (self.correction * average).try_normalize()?;
         let turn = rotation_to_up(up);
         self.correction = (turn * self.correction).normalize();
         // Setting the inclination from the first sample is no drift.
-        if first {
+        Some(if first {
             Cvec3::ZERO
         } else {
             turn.to_scaled_axis()
-        }
+        })
     }
 
     /// Turns the correction about the vertical towards magnetic north, if
-    /// the field passes the disturbance gate.
-    fn correct_heading(&mut self, mag: Cvec3, dt: f32) {
+    /// the field passes the disturbance gate. Returns the heading error it
+    /// saw (radians east of north), `None` if the field was not used.
+    fn correct_heading(&mut self, mag: Cvec3, dt: f32) -> Option<f32> {
         let p = self.params;
         let field = self.attitude() * mag;
         let horizontal = Cvec3::new(field.x, field.y, 0.0).norm();
         // NaN, infinite or zero field, or one without a horizontal part.
         if !horizontal.is_finite() || horizontal <= 0.0 {
-            return;
+            return None;
         }
         let seen = Cvec3::new(horizontal, field.z, 0.0);
         let first = !self.mag_reference.is_finite();
@@ -411,7 +521,7 @@ impl OrientationFilter {
         let reference = self.mag_reference;
         self.mag_reference = low_pass(reference, seen, smoothing_factor(dt, MAG_REFERENCE_TAU));
         if !first && (seen - reference).norm() > p.mag_gate * reference.norm() {
-            return;
+            return None;
         }
         // The field's angle east of north; turning by it about +z brings
         // it to north.
@@ -419,11 +529,50 @@ impl OrientationFilter {
         let fraction = if first {
             1.0
         } else {
-            smoothing_factor(dt, p.tau_mag)
+            smoothing_factor(dt, p.tau_mag.min(self.settling))
         };
         let turn = Quat::from_rotation_z(error * fraction);
         self.correction = (turn * self.correction).normalize();
+        Some(error)
     }
+
+    /// The state flags and internal errors after the last update (see
+    /// [`Diagnostics`]), for a firmware to log.
+    ///
+    /// ```
+    /// use rigtform::attitude::{FilterParams, OrientationFilter};
+    /// use rigtform::Cvec3;
+    /// let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    /// let g = Cvec3::new(0.0, 0.0, 9.81);
+    /// for _ in 0..400 {
+    ///     f.update(Cvec3::ZERO, g, 0.01); // 4 s still
+    /// }
+    /// let d = f.diagnostics();
+    /// assert!(d.resting && !d.initialising && !d.acc_ignored);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn diagnostics(&self) -> Diagnostics {
+        self.diagnostics
+    }
+}
+
+/// The earth's x and y axes in the sensor frame: the first two rows of
+/// the matrix of the unit quaternion `q` (sensor to earth).
+fn horizontal_axes(q: Quat) -> [Cvec3; 2] {
+    let Quat { w, x, y, z } = q;
+    [
+        Cvec3::new(
+            1.0 - 2.0 * (y * y + z * z),
+            2.0 * (x * y - w * z),
+            2.0 * (x * z + w * y),
+        ),
+        Cvec3::new(
+            2.0 * (x * y + w * z),
+            1.0 - 2.0 * (x * x + z * z),
+            2.0 * (y * z - w * x),
+        ),
+    ]
 }
 
 /// The smallest rotation that takes the unit vector `u` to +z: about the

@@ -27,13 +27,35 @@ pub struct FilterParams {
     /// as the sensor moves, while a residual gyro bias of 0.1 °/s about the
     /// vertical drifts only 1° in 10 s.
     pub tau_mag: f32,
-    /// Time constant, in seconds, with which the gyro bias follows the
-    /// corrections during motion (default 20 s): it has to be several times
-    /// `tau_acc` for the bias loop to stay well damped, and long enough to
-    /// average out the corrections that linear accelerations cause. The
-    /// bias changes with temperature over minutes. Infinite: no bias
-    /// estimation during motion.
+    /// The shortest time constant, in seconds, with which the gyro bias
+    /// follows the corrections during motion (default 20 s): the bias loop
+    /// stays well damped only while it is several times `tau_acc`, since a
+    /// bias error shows in the corrections only after the accelerometer
+    /// average's delay. Infinite: no bias estimation during motion.
     pub tau_bias: f32,
+    /// How fast the true gyro bias wanders, as a random walk, in rad/s per
+    /// square root of a second (default 0.01 °/s/√s, 1.75e-4: 0.1 °/s in
+    /// 100 s, a MEMS gyro's bias temperature coefficient of a few hundredths
+    /// of a °/s per kelvin over the kelvin or two a device warms by in
+    /// minutes). It sets how fast the bias estimate's uncertainty grows
+    /// while nothing measures it, and so how much weight a correction
+    /// during motion gets (see `bias_noise`).
+    pub bias_drift: f32,
+    /// During motion, each inclination correction, seen in the sensor
+    /// frame, measures the bias, with this noise density in rad/s per
+    /// square root of a hertz (default 0.57 °/s/√Hz, 0.01): a velocity
+    /// change of 0.5 m/s leaks about 0.7° of tilt into the accelerometer
+    /// average (see `tau_acc`), which the correction takes out over about
+    /// `tau_acc`, a rate of about 0.23 °/s correlated over about 3 s: a
+    /// density of `sqrt(2 * 3 s) * 0.23 °/s`. The bias follows the
+    /// corrections as a Kalman filter does: with the time constant
+    /// `bias_noise^2 / variance`, where `variance` is the estimate's
+    /// (which starts at `max_bias^2`, falls to about (0.01 °/s)^2 at rest
+    /// and grows with `bias_drift`), but never faster than `tau_bias`.
+    /// Right after a rest the bias is known and motion barely moves it; a
+    /// bias that was never seen at rest is learned within minutes.
+    /// Infinite: no bias estimation during motion.
+    pub bias_noise: f32,
     /// Time constant, in seconds, of the bias estimate while at rest, where
     /// the gyro reads its bias plus noise (default 3 s).
     pub tau_bias_rest: f32,
@@ -74,6 +96,16 @@ pub struct FilterParams {
     /// constant, so that a new environment is accepted in the end (after
     /// about a minute for a field 30 % off; longer the further off it is).
     pub mag_gate: f32,
+    /// The gyro's full scale in rad/s (default infinite: unknown, no
+    /// saturation detected). A reading within 1 % of it on any axis is
+    /// taken as saturated (a sensor at full scale reads its largest code,
+    /// which scale calibration may move slightly below the range): the
+    /// integrated gyro has lost the true rate, so the filter recovers as at
+    /// start-up, with time constants that start at zero and grow back to
+    /// `tau_acc` and `tau_mag` over `tau_acc` seconds after the last
+    /// saturated sample (see [`Diagnostics`](super::Diagnostics)). Set it
+    /// to the sensor's range, for instance 2000 °/s, 34.9 rad/s.
+    pub gyro_range: f32,
 }
 
 impl FilterParams {
@@ -90,6 +122,8 @@ impl FilterParams {
         tau_acc: 3.0,
         tau_mag: 10.0,
         tau_bias: 20.0,
+        bias_drift: 1.75e-4,
+        bias_noise: 0.01,
         tau_bias_rest: 3.0,
         rest_gyro: 0.035,
         max_bias: 0.035,
@@ -97,6 +131,7 @@ impl FilterParams {
         rest_time: 1.5,
         acc_gate: 0.1,
         mag_gate: 0.1,
+        gyro_range: f32::INFINITY,
     };
 }
 
@@ -108,6 +143,8 @@ impl FilterParams {
             self.tau_acc,
             self.tau_mag,
             self.tau_bias,
+            self.bias_drift,
+            self.bias_noise,
             self.tau_bias_rest,
             self.rest_gyro,
             self.max_bias,
@@ -115,6 +152,7 @@ impl FilterParams {
             self.rest_time,
             self.acc_gate,
             self.mag_gate,
+            self.gyro_range,
         ]
         .iter()
         .any(|p| p.is_nan())

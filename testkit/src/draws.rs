@@ -3,7 +3,7 @@
 
 use nalgebra as na;
 use rand::{Rng, SeedableRng};
-use rigtform::Quat;
+use rigtform::{Cvec3, Quat, RigTForm};
 
 use crate::reference::to_f32;
 
@@ -71,4 +71,33 @@ impl Draws {
         let q = self.unit_quat64();
         na::Vector3::new(q.i, q.j, q.k).normalize()
     }
+
+    /// A rotation by an angle uniform in `[0, max_angle)` about an axis
+    /// uniform over the sphere, in f64.
+    pub fn turn64(&mut self, max_angle: f64) -> na::Quaternion<f64> {
+        let axis = na::Unit::new_normalize(self.unit_vec64());
+        *na::UnitQuaternion::from_axis_angle(&axis, self.uniform(0.0, max_angle)).as_ref()
+    }
+
+    /// `n` keyframes on a random walk: the first rotation uniform, each
+    /// next one turned from it by up to [`KEY_STEP`] rad about a random
+    /// axis, translations in [-10, 10]. Keys two apart are then less than
+    /// pi apart, where the spline's conditional negations are well away
+    /// from their switch.
+    pub fn key_walk(&mut self, n: usize) -> Vec<RigTForm> {
+        let mut r = self.unit_quat64();
+        (0..n)
+            .map(|_| {
+                let t = [(); 3].map(|_| self.uniform(-10.0, 10.0) as f32);
+                let key = RigTForm::new(Cvec3::new(t[0], t[1], t[2]), to_f32(r));
+                r = self.turn64(KEY_STEP) * r;
+                key
+            })
+            .collect()
+    }
 }
+
+/// The largest turn, in radians, between neighbouring keys of
+/// [`Draws::key_walk`] and [`key_walk`](crate::strategies::key_walk): two
+/// steps stay 0.14 rad short of pi.
+pub const KEY_STEP: f64 = 1.5;

@@ -7,6 +7,8 @@
 //! - [`strategies`]: the same distributions as proptest strategies;
 //! - [`reference`](mod@reference): conversions to nalgebra's f64 types and the notes'
 //!   `pow` and `slerp` in f64, to measure errors against;
+//! - [`catmull_rom`]: the Catmull-Rom splines of rotations and
+//!   translations in f64;
 //! - [`tolerance`]: the documented error bounds of `pow` and `slerp` for a
 //!   given turn, and entry-wise matrix differences;
 //! - [`worst`]: the largest error seen, checked against a bound;
@@ -18,6 +20,7 @@
 //! fuzz seeds and on-target tests share; they are re-exported here.
 
 pub mod broad;
+pub mod catmull_rom;
 pub mod draws;
 pub mod reference;
 pub mod strategies;
@@ -25,8 +28,10 @@ pub mod tolerance;
 pub mod worst;
 
 pub use draws::{draw_count, Draws};
-pub use reference::{angle_error, pow64, rotation_angle64, slerp64, to_f32, to_f64, vec_to_f64};
+pub use reference::{
+    angle_error, euler64, pow64, rotation_angle64, slerp64, to_f32, to_f64, vec_to_f64,
+};
 pub use rigtform_proofs::edge::{edge_quats, finite_edges, EDGE_F32};
-pub use strategies::{rig_tform, unit_quat, vec3};
+pub use strategies::{key_walk, rig_tform, unit_quat, vec3};
 pub use tolerance::{max_entry_diff, pow_tol, slerp_tol};
 pub use worst::Worst;

@@ -4,7 +4,7 @@
 //! on-target tests use too).
 
 use nalgebra as na;
-use rigtform::{Cvec3, Quat};
+use rigtform::{Cvec3, EulerRot, Quat};
 use rigtform_proofs::reference::Quat64;
 
 /// `q` in f64, exactly.
@@ -71,4 +71,31 @@ pub fn slerp64(
         to_reference(q1.normalize()),
         alpha,
     ))
+}
+
+/// The rotation of the Euler angles `(a, b, c)` in f64: the product of the
+/// three axis rotations of `order`, first axis first (intrinsic).
+///
+/// ```
+/// use rigtform::{EulerRot, Quat};
+/// use rigtform_testkit::{angle_error, euler64};
+/// let q = Quat::from_euler(EulerRot::ZYX, 0.1, 0.2, 0.3);
+/// assert!(angle_error(q, euler64(EulerRot::ZYX, 0.1, 0.2, 0.3)) < 1e-6);
+/// ```
+pub fn euler64(order: EulerRot, a: f64, b: f64, c: f64) -> na::Quaternion<f64> {
+    let (x, y, z) = (
+        na::Vector3::x_axis(),
+        na::Vector3::y_axis(),
+        na::Vector3::z_axis(),
+    );
+    let axes = match order {
+        EulerRot::ZYX => [z, y, x],
+        EulerRot::ZXY => [z, x, y],
+        EulerRot::YXZ => [y, x, z],
+        EulerRot::YZX => [y, z, x],
+        EulerRot::XYZ => [x, y, z],
+        EulerRot::XZY => [x, z, y],
+    };
+    let r = |axis, angle| na::UnitQuaternion::from_axis_angle(&axis, angle);
+    (r(axes[0], a) * r(axes[1], b) * r(axes[2], c)).into_inner()
 }

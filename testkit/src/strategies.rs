@@ -1,6 +1,7 @@
 //! Proptest strategies for the crate's types, with the distributions of
 //! [`Draws`](crate::Draws).
 
+use nalgebra as na;
 use proptest::prelude::*;
 use rigtform::{Cvec3, Quat, RigTForm};
 
@@ -22,4 +23,30 @@ pub fn vec3() -> impl Strategy<Value = Cvec3> {
 /// A rigid body transform with a uniform unit rotation.
 pub fn rig_tform() -> impl Strategy<Value = RigTForm> {
     (vec3(), unit_quat()).prop_map(|(t, r)| RigTForm::new(t, r))
+}
+
+/// `n` keyframes on a random walk, as [`Draws::key_walk`](crate::Draws::key_walk)
+/// draws them: the first rotation uniform, each next one turned by up to
+/// [`KEY_STEP`](crate::draws::KEY_STEP) rad about a random axis.
+pub fn key_walk(n: usize) -> impl Strategy<Value = Vec<RigTForm>> {
+    (
+        unit_quat(),
+        prop::collection::vec((unit_quat(), 0.0..crate::draws::KEY_STEP, vec3()), n),
+    )
+        .prop_map(|(first, steps)| {
+            let mut r = crate::reference::to_f64(first);
+            steps
+                .into_iter()
+                .map(|(axis, angle, t)| {
+                    let key = RigTForm::new(t * 0.1, to_f32(r));
+                    let axis = na::Unit::new_normalize(na::Vector3::new(
+                        axis.x as f64,
+                        axis.y as f64,
+                        axis.z as f64,
+                    ));
+                    r = *na::UnitQuaternion::from_axis_angle(&axis, angle).as_ref() * r;
+                    key
+                })
+                .collect()
+        })
 }

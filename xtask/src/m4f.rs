@@ -1,5 +1,6 @@
 //! The Cortex-M4F table (instructions per call and flash bytes of every
-//! operation of `embedded/src/ops.rs`) and slerp's budget.
+//! operation of `embedded/src/ops.rs`), slerp's budget, and the attitude
+//! filter's budget.
 
 use std::fmt::Write;
 
@@ -15,6 +16,12 @@ const OPT_LEVELS: [&str; 2] = ["s", "3"];
 const SLERP_INSTRUCTIONS: i64 = 400;
 /// slerp's budget: flash bytes at opt-level "s".
 const SLERP_FLASH: u64 = 2048;
+
+/// The orientation filter's budgets on the Cortex-M4F: instructions per 6D
+/// update, per 9D update, and bytes of state.
+const FILTER_6D_INSTRUCTIONS: i64 = 1600;
+const FILTER_9D_INSTRUCTIONS: i64 = 2200;
+const FILTER_STATE_BYTES: u64 = 256;
 
 /// One operation of one library, as the bench announced it, with its count.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -147,6 +154,59 @@ pub fn budget() -> Result<()> {
     Ok(())
 }
 
+/// `cargo xtask filter-cost`: the rows of `embedded/src/bin/filter_cost.rs`
+/// (instructions per call of the attitude updates, and the filter's state
+/// size on the target), then the filter's budget; fails unless it holds.
+pub fn filter_budget(features: Option<&str>) -> Result<()> {
+    let rows = firmware::count("filter_cost", features)?;
+    for m in &rows {
+        println!(
+            "{:<42} {:>6} instructions (less an empty bracket of {})",
+            m.fields.join(" "),
+            m.instructions,
+            m.empty
+        );
+    }
+    let instructions = |name: &str| -> Result<i64> {
+        rows.iter()
+            .find(|m| m.fields.first().is_some_and(|f| f == name))
+            .map(|m| m.instructions)
+            .with_context(|| format!("the firmware announced no row {name:?}"))
+    };
+    let six = instructions("OrientationFilter::update (6D)")?;
+    let nine = instructions("OrientationFilter::update_with_mag (9D)")?;
+    let state = rows
+        .iter()
+        .find_map(|m| state_bytes(&m.fields))
+        .context("the firmware announced no state size")?;
+    println!("{}", filter_budget_line(six, nine, state));
+    ensure!(
+        six <= FILTER_6D_INSTRUCTIONS
+            && nine <= FILTER_9D_INSTRUCTIONS
+            && state <= FILTER_STATE_BYTES,
+        "the orientation filter is over its budget"
+    );
+    Ok(())
+}
+
+/// The state size a row names as `state <bytes> bytes`.
+fn state_bytes(fields: &[String]) -> Option<u64> {
+    let at = fields.iter().position(|f| f == "state")?;
+    match fields.get(at + 1..at + 3)? {
+        [n, unit] if unit == "bytes" => n.parse().ok(),
+        _ => None,
+    }
+}
+
+/// The filter budget's report line.
+fn filter_budget_line(six: i64, nine: i64, state: u64) -> String {
+    format!(
+        "orientation filter on the Cortex-M4F: {six} instructions per 6D update (budget \
+         {FILTER_6D_INSTRUCTIONS}), {nine} per 9D update (budget {FILTER_9D_INSTRUCTIONS}), \
+         {state} bytes of state (budget {FILTER_STATE_BYTES})"
+    )
+}
+
 /// The budget's report line.
 fn budget_line(instructions: i64, bytes: u64) -> String {
     format!(
@@ -178,6 +238,21 @@ mod tests {
             budget_line(368, 2044),
             "slerp on the Cortex-M4F: 368 instructions per call (budget 400), \
              2044 bytes of flash at opt-level \"s\" (budget 2048)"
+        );
+    }
+
+    #[test]
+    fn the_filter_rows_name_the_state_size() {
+        let fields = |f: &[&str]| f.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        let row = fields(&["OrientationFilter::update (6D)", "state", "156", "bytes"]);
+        assert_eq!(state_bytes(&row), Some(156));
+        assert_eq!(state_bytes(&fields(&["Quat::integrate"])), None);
+        assert_eq!(state_bytes(&fields(&["x", "state", "156"])), None);
+        assert_eq!(state_bytes(&fields(&["x", "state", "many", "bytes"])), None);
+        assert_eq!(
+            filter_budget_line(1348, 1887, 156),
+            "orientation filter on the Cortex-M4F: 1348 instructions per 6D update \
+             (budget 1600), 1887 per 9D update (budget 2200), 156 bytes of state (budget 256)"
         );
     }
 }

@@ -12,7 +12,10 @@
 //!   fails unless rigtform's slerp takes at most 400 instructions per call
 //!   and 2048 bytes. CI runs it.
 //! - `cargo xtask filter-cost [--features fast-math]`: instructions per
-//!   call of the attitude updates (`embedded/src/bin/filter_cost.rs`).
+//!   call of the attitude updates (`embedded/src/bin/filter_cost.rs`) and
+//!   the filter's state size on the target; fails unless a 6D update takes
+//!   at most 1,600 instructions, a 9D update at most 2,200, and the state
+//!   at most 256 bytes. CI runs it.
 //! - `cargo xtask perf-report [--draws N]`: the tables of the performance
 //!   page, `docs/performance.md`: criterion's medians on the host (`cargo bench -p
 //!   rigtform-compare --bench ops`, then rigtform's functions with
@@ -76,7 +79,8 @@ enum Cmd {
     /// Fails unless slerp keeps to 400 instructions per call and 2048 bytes
     /// of flash at opt-level "s" on the Cortex-M4F
     Budget,
-    /// Instructions per call of the attitude updates on the Cortex-M4F
+    /// Instructions per call of the attitude updates on the Cortex-M4F;
+    /// fails unless they and the filter's state keep to their budgets
     FilterCost {
         /// Cargo features of the firmware (`fast-math` for micromath's
         /// kernels)
@@ -113,16 +117,7 @@ fn run(command: Cmd) -> Result<()> {
             print!("{}", m4f::table(&ops));
         }
         Cmd::Budget => m4f::budget()?,
-        Cmd::FilterCost { features } => {
-            for m in firmware::count("filter_cost", features.as_deref())? {
-                println!(
-                    "{:<42} {:>6} instructions (less an empty bracket of {})",
-                    m.fields.join(" "),
-                    m.instructions,
-                    m.empty
-                );
-            }
-        }
+        Cmd::FilterCost { features } => m4f::filter_budget(features.as_deref())?,
         Cmd::PerfReport { draws } => report::perf_report(draws)?,
     }
     Ok(())

@@ -53,6 +53,21 @@ fn rig_tforms(seed: u64) -> impl Iterator<Item = RigTForm> {
     (0..DRAWS).map(move |_| RigTForm::new(d.vec3(100.0), d.unit_quat()))
 }
 
+/// Four keyframes on a random walk: the first rotation uniform, each next
+/// one turned by up to 1.5 rad about a random axis (the spline laws'
+/// precondition), translations within 100.
+fn key_walks(seed: u64) -> impl Iterator<Item = [RigTForm; 4]> {
+    let mut d = Draws::new(seed);
+    (0..DRAWS).map(move |_| {
+        let mut r = d.unit_quat();
+        core::array::from_fn(|_| {
+            let key = RigTForm::new(d.vec3(100.0), r);
+            r = (Quat::from_axis_angle(d.vec3(1.0), d.uniform(0.0, 1.5)) * r).normalize();
+            key
+        })
+    })
+}
+
 const ALPHAS: [f32; 9] = [0.0, 0.25, 0.5, 1.0, -2.0, 3.0, 1e-30, 1e30, f32::MAX];
 
 /// The largest `pow` and `slerp` angle errors per radian turned, and the
@@ -305,6 +320,34 @@ fn main() -> ! {
             })
         },
     );
+
+    t.check("catmull_rom_is_the_key_at_and_beyond_each_key", || {
+        let mut others = unit_pairs(24);
+        each(some_edge_quats(), |q| {
+            let (a, b) = others.next().unwrap_or((Quat::IDENTITY, Quat::IDENTITY));
+            let keys = [a, q, b];
+            for t in [f32::NAN, -1.0, 0.0, 1.0, 2.0, 7.0, f32::INFINITY] {
+                laws::catmull_rom_is_the_key_at_and_beyond_each_key(&keys, t)?;
+            }
+            Ok(())
+        })
+    });
+    t.check("catmull_rom_is_unit and left invariant", || {
+        let mut d = Draws::new(25);
+        each(key_walks(26), |keys| {
+            let r = keys.map(|k| k.r);
+            let at = d.uniform(-0.5, 3.5);
+            laws::catmull_rom_is_unit(&r, at)?;
+            laws::catmull_rom_is_left_invariant(d.unit_quat(), r, at)?;
+            laws::catmull_rom_of_two_keys_follows_the_slerp_path(r[0], r[1], at - 1.0)
+        })
+    });
+    t.check("catmull_rom_translation_is_the_cubic", || {
+        let mut d = Draws::new(27);
+        each(key_walks(28), |keys| {
+            laws::catmull_rom_translation_is_the_cubic(&keys, d.uniform(-0.5, 3.5))
+        })
+    });
 
     rigtform_embedded::attitude::check_all(&mut t, DRAWS);
 

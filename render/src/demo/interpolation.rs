@@ -7,9 +7,8 @@
 //! expressed back in `w` so that it can be drawn from the same camera. A
 //! left-invariant method gives the same motion for every `G`.
 
-use rigtform::{Matrix4, RigTForm};
+use rigtform::{EulerRot, Matrix4, Quat, RigTForm};
 
-use crate::demo::euler::Euler;
 use crate::vertex::Placement;
 
 /// An interpolation method.
@@ -19,7 +18,7 @@ pub enum Method {
     /// moves on a straight line, so the object shears and shrinks.
     MatrixLerp,
     /// Translation lerped, rotation factored into Euler angles
-    /// ([`Euler`]) and each angle lerped: an unnatural path that depends on
+    /// ([`lerp_euler_angles`]) and each angle lerped: an unnatural path that depends on
     /// the world frame.
     EulerLerp,
     /// [`RigTForm::interpolate`]: the origin on a straight line at constant
@@ -72,9 +71,7 @@ impl Method {
                 Matrix4::from(world) * lerp_matrix(Matrix4::from(a), Matrix4::from(b), alpha),
             ),
             Method::EulerLerp => {
-                let r = Euler::from_quat(a.r)
-                    .lerp(Euler::from_quat(b.r), alpha)
-                    .to_quat();
+                let r = lerp_euler_angles(a.r, b.r, alpha);
                 Placement::Rigid(world * RigTForm::new(a.t.lerp(b.t, alpha), r))
             }
             Method::Slerp => Placement::Rigid(world * a.interpolate(b, alpha)),
@@ -82,10 +79,34 @@ impl Method {
     }
 }
 
+/// The "bad idea": each of the yaw, pitch and roll angles of the two
+/// rotations ([`EulerRot::ZYX`], the same as turning about the world's x,
+/// then y, then z axis) lerped on its own.
+///
+/// ```
+/// use rigtform::{EulerRot, Quat};
+/// use rigtform_render::demo::interpolation::lerp_euler_angles;
+/// let a = Quat::from_euler(EulerRot::ZYX, -1.0, 0.2, 0.0);
+/// let b = Quat::from_euler(EulerRot::ZYX, 1.0, 0.4, 1.0);
+/// let mid = lerp_euler_angles(a, b, 0.5);
+/// assert!(mid.angle_to(Quat::from_euler(EulerRot::ZYX, 0.0, 0.3, 0.5)) < 1e-6);
+/// ```
+#[must_use]
+pub fn lerp_euler_angles(a: Quat, b: Quat, alpha: f32) -> Quat {
+    let (a, b) = (a.to_euler(EulerRot::ZYX), b.to_euler(EulerRot::ZYX));
+    let lerp = |x: f32, y: f32| x + (y - x) * alpha;
+    Quat::from_euler(
+        EulerRot::ZYX,
+        lerp(a.0, b.0),
+        lerp(a.1, b.1),
+        lerp(a.2, b.2),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rigtform::{Cvec3, Cvec4, Quat};
+    use rigtform::{Cvec3, Cvec4};
 
     fn keyframes() -> (RigTForm, RigTForm) {
         let k0 = RigTForm::new(Cvec3::new(-1.0, 1.0, 0.0), Quat::from_rotation_x(0.3));
@@ -105,7 +126,7 @@ mod tests {
 
     fn apply(placement: Placement, p: Cvec3) -> Cvec3 {
         match placement {
-            Placement::Rigid(r) => (r * Cvec4::from_point(p)).xyz(),
+            Placement::Rigid(r) => r.transform_point(p),
             Placement::Matrix(m) => (m * Cvec4::from_point(p)).xyz(),
         }
     }
@@ -154,9 +175,8 @@ mod tests {
         else {
             panic!("matrix lerp gives a matrix");
         };
-        // The 3x3 block's determinant is the volume scale.
-        let [a, b, c, _] = m.cols.map(Cvec4::xyz);
-        let det = a.dot(b.cross(c));
+        // The determinant is the volume scale.
+        let det = m.determinant();
         // Turning by theta, the lerp halfway scales the plane of the turn
         // by cos(theta / 2) in each direction.
         let expected = (1.3f32).cos().powi(2);

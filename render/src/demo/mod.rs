@@ -10,12 +10,14 @@
 //!
 //! - [`bad_ideas`]: the comparison, its keyframes, panels and captions:
 //!   slerp against the notes' bad ideas, and in a turned world frame.
-//! - [`interpolation`]: the methods the panels use.
-//! - [`euler`]: Euler angles, for the Euler lerp.
+//! - [`interpolation`]: the methods the panels use (the Euler angles are
+//!   the library's `EulerRot::ZYX`).
+//! - [`spline`]: the keyframe comparison of `--spline`, with panels and a
+//!   plot of its own: slerp key to key beside the Catmull-Rom spline.
 
 pub mod bad_ideas;
-pub mod euler;
 pub mod interpolation;
+pub mod spline;
 
 pub use bad_ideas::{keyframes, rotated_world, Comparison, Panel};
 
@@ -178,10 +180,9 @@ impl Demo {
 
 /// Where `placement` puts the object's point `p`, in world coordinates.
 fn apply(placement: Placement, p: Cvec3) -> Cvec3 {
-    let p = Cvec4::from_point(p);
     match placement {
-        Placement::Rigid(r) => (r * p).xyz(),
-        Placement::Matrix(m) => (m * p).xyz(),
+        Placement::Rigid(r) => r.transform_point(p),
+        Placement::Matrix(m) => (m * Cvec4::from_point(p)).xyz(),
     }
 }
 

@@ -65,8 +65,8 @@ fn tumble(t: f32) -> Cvec3 {
 
 #[test]
 fn state_size_is_as_documented() {
-    assert_eq!(core::mem::size_of::<OrientationFilter>(), 156);
-    assert_eq!(core::mem::size_of::<FilterParams>(), 44);
+    assert_eq!(core::mem::size_of::<OrientationFilter>(), 240);
+    assert_eq!(core::mem::size_of::<FilterParams>(), 56);
 }
 
 #[test]
@@ -438,4 +438,124 @@ fn rotation_to_up_takes_the_vector_up() {
         // About a horizontal axis: no heading.
         assert!(q.z.abs() < 1e-7, "{u:?}");
     }
+}
+
+/// The inclination error `seconds` after a start whose first
+/// accelerometer sample was tilted 5° by a bump, level and still after it.
+fn inclination_after_a_bumped_start(seconds: f32) -> f32 {
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let level = Cvec3::new(0.0, 0.0, G);
+    f.update(Cvec3::ZERO, Quat::from_rotation_x(0.087) * level, 0.01);
+    let mut q = f.attitude();
+    for _ in 0..(seconds * 100.0) as u32 {
+        q = f.update(Cvec3::ZERO, level, 0.01);
+    }
+    inclination_error(q, Quat::IDENTITY)
+}
+
+#[test]
+fn start_up_converges_in_about_a_second_and_then_settles() {
+    // At start-up the time constants are the time passed: a bad first
+    // sample is averaged out within a second (with tau_acc from the start,
+    // more than half of it would still be there).
+    let start = inclination_after_a_bumped_start(0.0);
+    let one_second = inclination_after_a_bumped_start(1.0);
+    std::println!("bumped start: {start} rad -> {one_second} after 1 s");
+    assert!(start > 0.08);
+    assert!(one_second < 0.1 * start, "{one_second}");
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let level = Cvec3::new(0.0, 0.0, G);
+    f.update(Cvec3::ZERO, level, 0.01);
+    assert!(f.diagnostics().initialising);
+    for _ in 0..(FilterParams::DEFAULT.tau_acc * 100.0) as u32 + 1 {
+        f.update(Cvec3::ZERO, level, 0.01);
+    }
+    assert!(!f.diagnostics().initialising);
+    // A filter started from a known attitude does not initialise.
+    let known = OrientationFilter::with_attitude(FilterParams::DEFAULT, Quat::IDENTITY);
+    assert!(!known.diagnostics().initialising);
+}
+
+/// A spin at 40 rad/s about a horizontal axis for half a second, read by a
+/// gyro whose range is 2000 °/s (34.9 rad/s) and clips, then still: the
+/// worst inclination error 2 s after the spin, and the flags seen.
+fn after_a_spin_beyond_range(params: FilterParams) -> (f32, bool, bool, bool) {
+    let range = 2000.0f32.to_radians();
+    let mut f = OrientationFilter::new(params);
+    let dt = 0.002;
+    let mut truth = Quat::IDENTITY;
+    let up = Cvec3::new(0.0, 0.0, G);
+    for _ in 0..1000 {
+        f.update(Cvec3::ZERO, truth.inv() * up, dt); // 2 s still
+    }
+    let (mut saturated, mut recovering) = (false, false);
+    for _ in 0..250 {
+        let omega = Cvec3::new(40.0, 0.0, 0.0);
+        truth = truth.integrate(omega, dt);
+        let read = Cvec3::new(omega.x.min(range), 0.0, 0.0);
+        f.update(read, truth.inv() * up, dt);
+        saturated |= f.diagnostics().gyro_saturated;
+    }
+    let mut worst: f32 = 0.0;
+    for i in 0..2500 {
+        let q = f.update(Cvec3::ZERO, truth.inv() * up, dt);
+        recovering |= f.diagnostics().recovering;
+        if i >= 1000 {
+            worst = worst.max(inclination_error(q, truth));
+        }
+    }
+    (worst, saturated, recovering, f.diagnostics().recovering)
+}
+
+#[test]
+fn recovers_quickly_after_a_spin_beyond_the_gyro_range() {
+    let range = 2000.0f32.to_radians();
+    let known = FilterParams {
+        gyro_range: range,
+        ..FilterParams::DEFAULT
+    };
+    let (worst, saturated, recovering, still_recovering) = after_a_spin_beyond_range(known);
+    let (unknown, unseen, _, _) = after_a_spin_beyond_range(FilterParams::DEFAULT);
+    std::println!("after the spin: {worst} rad with the range, {unknown} without");
+    assert!(saturated && recovering && !still_recovering);
+    assert!(!unseen, "no range, no saturation");
+    // The clipped gyro lost 0.5 s * 5 rad/s = 2.5 rad of the turn.
+    assert!(unknown > 0.3, "{unknown}");
+    assert!(worst < 0.5f32.to_radians(), "{worst}");
+}
+
+#[test]
+fn diagnostics_flag_what_was_ignored() {
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let level = Cvec3::new(0.0, 0.0, G);
+    for _ in 0..500 {
+        f.update_with_mag(Cvec3::ZERO, level, FIELD, 0.01);
+    }
+    let d = f.diagnostics();
+    assert!(!d.acc_ignored && !d.mag_ignored && d.resting && !d.gyro_saturated);
+    // A field twice as strong: a disturbance, kept out.
+    f.update_with_mag(Cvec3::ZERO, level, FIELD * 2.0, 0.01);
+    assert!(f.diagnostics().mag_ignored);
+    // A field turned 10° about the vertical passes the gate, and its
+    // heading error is reported.
+    let turned = Quat::from_rotation_z(0.17).inv() * FIELD;
+    f.update_with_mag(Cvec3::ZERO, level, turned, 0.01);
+    let d = f.diagnostics();
+    assert!(
+        !d.mag_ignored && (d.mag_error.abs() - 0.17).abs() < 0.01,
+        "{d:?}"
+    );
+    // 6D: no magnetometer, nothing ignored.
+    f.update(Cvec3::ZERO, level, 0.01);
+    assert!(!f.diagnostics().mag_ignored && f.diagnostics().mag_error == 0.0);
+    // A jolt far from gravity, held: the average leaves the gate.
+    for _ in 0..300 {
+        f.update(Cvec3::ZERO, level * 2.0, 0.01);
+    }
+    assert!(f.diagnostics().acc_ignored && f.diagnostics().acc_error == 0.0);
+    // A tilted but plausible vector: corrected, and the angle reported.
+    let mut g = OrientationFilter::new(FilterParams::DEFAULT);
+    g.update(Cvec3::ZERO, level, 0.01);
+    g.update(Cvec3::ZERO, Quat::from_rotation_x(0.1) * level, 0.01);
+    assert!(!g.diagnostics().acc_ignored && g.diagnostics().acc_error > 0.0);
 }

@@ -1,7 +1,8 @@
 //! Runs `rigtform`'s orientation filter on real IMU recordings and scores
-//! it with the BROAD benchmark's metric, beside the published figures of
-//! Madgwick, Mahony and VQF on the same trials; writes a plot of the error
-//! over time.
+//! it with the BROAD benchmark's metric, beside VQF run on the same CSVs in
+//! the same run (`tools/vqf_broad.py`, which needs `pip install vqf`) and the
+//! published figures of Madgwick and Mahony; writes a plot of the error over
+//! time.
 //!
 //! ```sh
 //! cargo run --release -p rigtform-compare --bin broad -- ../shared/data/imu/broad_*.csv \
@@ -13,6 +14,7 @@
 //! and its origin are described in the README's IMU section.
 
 mod plot;
+mod vqf;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -33,18 +35,18 @@ struct Args {
     /// Where to write the PNG plot of the error over time (BROAD trials).
     #[arg(long)]
     plot: Option<PathBuf>,
+    /// The Python interpreter that runs VQF (it needs the `vqf` package).
+    #[arg(long, default_value = "python3")]
+    python: String,
 }
 
 /// Published RMSEs in degrees on a BROAD trial: Madgwick and Mahony with
 /// the one parameter set best over all 39 trials (TAGP; inclination,
-/// total), from the BROAD authors' `results_*_average_rmse.json`; VQF's 6D
-/// inclination from the VQF paper (Laidig and Seel, Information Fusion
-/// 2023).
+/// total), from the BROAD authors' `results_*_average_rmse.json`.
 struct Published {
     trial: &'static str,
     madgwick: (f64, f64),
     mahony: (f64, f64),
-    vqf_inclination: f64,
 }
 
 const PUBLISHED: [Published; 3] = [
@@ -52,19 +54,16 @@ const PUBLISHED: [Published; 3] = [
         trial: "02",
         madgwick: (0.80, 1.50),
         mahony: (0.66, 2.97),
-        vqf_inclination: 0.43,
     },
     Published {
         trial: "07",
         madgwick: (2.50, 5.00),
         mahony: (1.84, 5.23),
-        vqf_inclination: 1.02,
     },
     Published {
         trial: "16",
         madgwick: (3.09, 4.82),
         mahony: (10.01, 20.28),
-        vqf_inclination: 0.54,
     },
 ];
 
@@ -74,6 +73,9 @@ pub struct Trial {
     pub samples: Vec<BroadSample>,
     pub six: Run,
     pub nine: Run,
+    /// VQF's 6D and 9D runs over the same samples.
+    pub vqf_six: Run,
+    pub vqf_nine: Run,
 }
 
 fn main() -> ExitCode {
@@ -100,7 +102,7 @@ fn evaluate(args: &Args) -> Result<(), String> {
             Recording::Broad(samples) if samples.is_empty() => {
                 return Err(format!("{}: no samples", path.display()))
             }
-            Recording::Broad(samples) => trials.push((name, samples)),
+            Recording::Broad(samples) => trials.push((name, path, samples)),
             Recording::Fusion(samples) if samples.len() < 2 => {
                 return Err(format!("{}: fewer than two samples", path.display()))
             }
@@ -110,13 +112,18 @@ fn evaluate(args: &Args) -> Result<(), String> {
     let params = FilterParams::DEFAULT;
     let trials: Vec<Trial> = trials
         .into_iter()
-        .map(|(name, samples)| Trial {
-            six: metric::run(&samples, params, false),
-            nine: metric::run(&samples, params, true),
-            name,
-            samples,
+        .map(|(name, path, samples)| {
+            let (vqf_six, vqf_nine) = vqf::run(&args.python, path, &samples)?;
+            Ok(Trial {
+                six: metric::run(&samples, params, false),
+                nine: metric::run(&samples, params, true),
+                vqf_six,
+                vqf_nine,
+                name,
+                samples,
+            })
         })
-        .collect();
+        .collect::<Result<_, String>>()?;
     if !trials.is_empty() {
         print_table(&trials);
     }
@@ -142,29 +149,33 @@ fn trial_number(name: &str) -> Option<&str> {
 
 fn print_table(trials: &[Trial]) {
     println!("BROAD trials: RMSE in degrees over the movement phase, FilterParams::DEFAULT for every trial.");
-    println!("Madgwick and Mahony: the BROAD authors' 9D runs with the one parameter set best over all 39 trials (TAGP).");
-    println!("VQF: 6D inclination as published.\n");
-    println!("| trial | ours 6D incl. | ours 9D incl. | ours 9D heading | ours 9D total | Madgwick incl. / total | Mahony incl. / total | VQF 6D incl. |");
-    println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
-    let mut verdicts = Vec::new();
+    println!("VQF: the `vqf` package from PyPI (VQF(Ts).updateBatch, default parameters), run on the same CSVs in this run.");
+    println!("Madgwick and Mahony: the BROAD authors' 9D runs with the one parameter set best over all 39 trials (TAGP).\n");
+    println!("| trial | ours 6D incl. | VQF 6D incl. | ours 9D incl. | VQF 9D incl. | ours 9D heading | VQF 9D heading | ours 9D total | VQF 9D total | Madgwick incl. / total | Mahony incl. / total |");
+    println!("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |");
     for t in trials {
         let (six, nine) = (t.six.rmse, t.nine.rmse);
+        let (vqf_six, vqf_nine) = (t.vqf_six.rmse, t.vqf_nine.rmse);
         let published = trial_number(&t.name).and_then(|n| PUBLISHED.iter().find(|p| p.trial == n));
-        let (madgwick, mahony, vqf) = match published {
+        let (madgwick, mahony) = match published {
             Some(p) => (
                 format!("{:.2} / {:.2}", p.madgwick.0, p.madgwick.1),
                 format!("{:.2} / {:.2}", p.mahony.0, p.mahony.1),
-                format!("{:.2}", p.vqf_inclination),
             ),
-            None => ("-".into(), "-".into(), "-".into()),
+            None => ("-".into(), "-".into()),
         };
         println!(
-            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {madgwick} | {mahony} | {vqf} |",
-            t.name, six.inclination, nine.inclination, nine.heading, nine.total
+            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {madgwick} | {mahony} |",
+            t.name,
+            six.inclination,
+            vqf_six.inclination,
+            nine.inclination,
+            vqf_nine.inclination,
+            nine.heading,
+            vqf_nine.heading,
+            nine.total,
+            vqf_nine.total
         );
-        if let Some(p) = published {
-            verdicts.push((t.name.as_str(), p, six, nine));
-        }
         let nan = t
             .six
             .estimates
@@ -176,19 +187,41 @@ fn print_table(trials: &[Trial]) {
             println!("  ({nan} non-finite estimates in {})", t.name);
         }
     }
-    if verdicts.is_empty() {
-        return;
-    }
-    println!("\nAgainst the published figures:");
-    for (name, p, six, nine) in verdicts {
-        let best_incl = p.madgwick.0.min(p.mahony.0);
-        let check = |ok: bool| if ok { "met" } else { "MISSED" };
+    println!("\nAgainst VQF, measured in this run:");
+    let check = |ok: bool| if ok { "met" } else { "MISSED" };
+    for t in trials {
+        let (six, nine) = (t.six.rmse, t.nine.rmse);
+        let (vqf_six, vqf_nine) = (t.vqf_six.rmse, t.vqf_nine.rmse);
         println!(
-            "  {name}: 6D and 9D inclination below Madgwick and Mahony ({best_incl:.2}): {}; 9D total below Madgwick ({:.2}): {}; 6D inclination / VQF: {:.2}x",
+            "  {}: 6D inclination at or below VQF's: {} ({:.3} against {:.3}); 9D total at or below VQF's: {} ({:.3} against {:.3})",
+            t.name,
+            check(six.inclination <= vqf_six.inclination),
+            six.inclination,
+            vqf_six.inclination,
+            check(nine.total <= vqf_nine.total),
+            nine.total,
+            vqf_nine.total,
+        );
+    }
+    let verdicts: Vec<_> = trials
+        .iter()
+        .filter_map(|t| {
+            let n = trial_number(&t.name)?;
+            Some((t, PUBLISHED.iter().find(|p| p.trial == n)?))
+        })
+        .collect();
+    if !verdicts.is_empty() {
+        println!("\nAgainst the published figures of Madgwick and Mahony:");
+    }
+    for (t, p) in verdicts {
+        let (six, nine) = (t.six.rmse, t.nine.rmse);
+        let best_incl = p.madgwick.0.min(p.mahony.0);
+        println!(
+            "  {}: 6D and 9D inclination below Madgwick and Mahony ({best_incl:.2}): {}; 9D total below Madgwick ({:.2}): {}",
+            t.name,
             check(six.inclination < best_incl && nine.inclination < best_incl),
             p.madgwick.1,
             check(nine.total < p.madgwick.1),
-            six.inclination / p.vqf_inclination,
         );
     }
     for t in trials {

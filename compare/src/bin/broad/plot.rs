@@ -1,5 +1,6 @@
 //! The error-over-time plot of the `broad` binary: one panel per BROAD
-//! trial, 6D inclination error and 9D total error in degrees.
+//! trial, 6D inclination error and 9D total error in degrees, ours and
+//! VQF's (measured in the same run).
 
 use std::path::Path;
 
@@ -51,25 +52,30 @@ pub fn write(path: &Path, trials: &[Trial]) -> Result<(), String> {
     })
 }
 
-/// Per bucket of samples: time (s), largest 6D inclination error and
-/// largest 9D total error (degrees), over the samples with ground truth.
-fn series(t: &Trial) -> Vec<(f64, f64, f64)> {
+/// Per bucket of samples: time (s), then the largest 6D inclination error
+/// and the largest 9D total error (degrees), ours and VQF's, over the
+/// samples with ground truth.
+fn series(t: &Trial) -> Vec<(f64, [f64; 4])> {
     let dt = f64::from(rigtform_testkit::broad::data::BROAD_DT);
     let mut points = Vec::new();
     for (k, chunk) in t.samples.chunks(BUCKET).enumerate() {
-        let mut worst: Option<(f64, f64)> = None;
+        let mut worst: Option<[f64; 4]> = None;
         for (i, s) in chunk.iter().enumerate() {
             if s.truth.iter().any(|c| c.is_nan()) {
                 continue;
             }
             let j = k * BUCKET + i;
-            let six = sample_error(t.six.estimates[j], s.truth).inclination;
-            let nine = sample_error(t.nine.estimates[j], s.truth).total;
-            let (a, b) = worst.unwrap_or((0.0, 0.0));
-            worst = Some((a.max(six), b.max(nine)));
+            let errors = [
+                sample_error(t.six.estimates[j], s.truth).inclination,
+                sample_error(t.nine.estimates[j], s.truth).total,
+                sample_error(t.vqf_six.estimates[j], s.truth).inclination,
+                sample_error(t.vqf_nine.estimates[j], s.truth).total,
+            ];
+            let w = worst.unwrap_or([0.0; 4]);
+            worst = Some(core::array::from_fn(|c| w[c].max(errors[c])));
         }
-        if let Some((six, nine)) = worst {
-            points.push(((k * BUCKET) as f64 * dt, six, nine));
+        if let Some(w) = worst {
+            points.push(((k * BUCKET) as f64 * dt, w));
         }
     }
     points
@@ -134,11 +140,13 @@ fn plot_into(
     root.fill(&WHITE)?;
     let six_colour = RGBColor(31, 119, 180);
     let nine_colour = RGBColor(214, 39, 40);
+    let vqf_six_colour = RGBColor(140, 190, 230);
+    let vqf_nine_colour = RGBColor(240, 150, 150);
     for (panel, t) in root.split_evenly((trials.len(), 1)).iter().zip(trials) {
         let points = series(t);
         let end = points.last().map_or(1.0, |p| p.0);
         // Up to the 99.5th percentile of both curves, so one spike does not flatten the rest.
-        let mut values: Vec<f64> = points.iter().flat_map(|p| [p.1, p.2]).collect();
+        let mut values: Vec<f64> = points.iter().flat_map(|p| p.1).collect();
         values.sort_by(f64::total_cmp);
         let top = values
             .get(values.len() * 995 / 1000)
@@ -167,14 +175,15 @@ fn plot_into(
         }
         mesh.draw()?;
         let clip = |v: f64| v.min(top);
+        // VQF's curves first, in lighter colours, so ours stay on top.
         let curves = [
-            ("6D inclination", six_colour, 1),
-            ("9D total", nine_colour, 2),
+            ("VQF 6D inclination", vqf_six_colour, 2),
+            ("VQF 9D total", vqf_nine_colour, 3),
+            ("ours 6D inclination", six_colour, 0),
+            ("ours 9D total", nine_colour, 1),
         ];
         for (name, colour, column) in curves {
-            let line = points
-                .iter()
-                .map(|p| (p.0, clip(if column == 1 { p.1 } else { p.2 })));
+            let line = points.iter().map(|p| (p.0, clip(p.1[column])));
             let series = chart.draw_series(LineSeries::new(line, colour))?;
             if labels {
                 series

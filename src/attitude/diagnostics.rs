@@ -1,0 +1,54 @@
+//! [`Diagnostics`]: what the [`OrientationFilter`](super::OrientationFilter)
+//! did with the last sample, for a firmware to log.
+
+/// The state flags and internal errors of an
+/// [`OrientationFilter`](super::OrientationFilter) after its last update,
+/// from [`diagnostics`](super::OrientationFilter::diagnostics). `Copy`,
+/// 16 bytes.
+///
+/// # Examples
+///
+/// ```
+/// use rigtform::attitude::{FilterParams, OrientationFilter};
+/// use rigtform::Cvec3;
+/// let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+/// let g = Cvec3::new(0.0, 0.0, 9.81);
+/// f.update(Cvec3::ZERO, g, 0.01);
+/// assert!(f.diagnostics().initialising);
+/// // Free fall: no direction to correct with.
+/// f.update(Cvec3::ZERO, Cvec3::ZERO, 0.01);
+/// assert!(f.diagnostics().acc_ignored);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[repr(C)]
+pub struct Diagnostics {
+    /// The inclination correction's angle in the last update, in radians:
+    /// how far the accelerometer average was from up (0 when ignored).
+    pub acc_error: f32,
+    /// The heading error the magnetometer saw in the last update, in
+    /// radians (east of magnetic north is positive; 0 when ignored or in
+    /// 6D).
+    pub mag_error: f32,
+    /// Start-up: since the first usable accelerometer sample, less than
+    /// `tau_acc` seconds have passed, and the corrections use the time
+    /// passed as their time constant (the average of every sample so far)
+    /// instead of `tau_acc` and `tau_mag`.
+    pub initialising: bool,
+    /// The same short time constants after the gyro reached its range
+    /// (`FilterParams::gyro_range`): the integrated gyro is no longer to be
+    /// trusted, so the accelerometer and magnetometer take over quickly.
+    pub recovering: bool,
+    /// The gyro reading of the last update reached `gyro_range` on some axis.
+    pub gyro_saturated: bool,
+    /// The rest detector sees the sensor at rest.
+    pub resting: bool,
+    /// The accelerometer made no inclination correction in the last update:
+    /// no usable vector (NaN, infinite or zero), or its average outside
+    /// `acc_gate` of gravity.
+    pub acc_ignored: bool,
+    /// A magnetometer sample made no heading correction in the last update:
+    /// no usable field, or outside the disturbance gate (`mag_gate`).
+    /// `false` in 6D.
+    pub mag_ignored: bool,
+}
