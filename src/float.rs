@@ -10,7 +10,7 @@
 //! | `float/atan2.rs` | [`atan2_kernel`](atan2::atan2_kernel): one division onto [-tan(1/2), tan(1/2)] and a degree-13 odd minimax polynomial | [`ATAN2_MAX_ULP`](crate::accuracy::ATAN2_MAX_ULP) |
 //! | `float/sin_cos.rs` | [`sin_cos_kernel`](sin_cos::sin_cos_kernel): a degree-7 and a degree-8 minimax polynomial on [-pi/4, pi/4], one subtraction up to 3 pi/4 | [`SIN_COS_NARROW_MAX_ULP`](crate::accuracy::SIN_COS_NARROW_MAX_ULP), [`SIN_COS_MAX_ULP`](crate::accuracy::SIN_COS_MAX_ULP) beyond |
 //! | `float/reduce.rs` | reduction by quarter turns for every finite f32 (Payne and Hanek, in integers), into a head and a tail | checked through the sine and cosine beyond 3 pi/4 ([`SIN_COS_MAX_ULP`](crate::accuracy::SIN_COS_MAX_ULP)) |
-//! | `float/sqrt.rs` | the FPU's `vsqrt.f32` on Arm hard-float targets, libm's `sqrtf` elsewhere | 0.5 ulp |
+//! | `float/sqrt.rs` | the FPU's `vsqrt.f32` on Arm hard-float targets, libm's `sqrtf` elsewhere; on 64-bit desktop targets also `sqrt_by_newton`, the same results in arithmetic a loop can vectorize | 0.5 ulp |
 //! | `float/norm.rs` | the overflow- and underflow-free sum of squares behind every `norm` and `normalize` | 2 ulp |
 //! | `float/fast_math.rs` | `fast-math`: micromath's atan2, sin, cos and tan, guarded | [`accuracy`](crate::accuracy) |
 //!
@@ -44,6 +44,21 @@ pub(crate) use bits::SIGN;
 pub(crate) use norm::{scale_for_squares, ScaledSquares};
 pub(crate) use sin_cos::sin3;
 pub use sqrt::sqrt;
+#[cfg(all(
+    any(target_arch = "x86_64", target_arch = "aarch64"),
+    not(feature = "fast-math")
+))]
+pub(crate) use sqrt::sqrt_by_newton;
+/// What the vectorizable lanes of `Quat::slerp_slice` share with the single
+/// call.
+#[cfg(all(
+    any(target_arch = "x86_64", target_arch = "aarch64"),
+    not(feature = "fast-math")
+))]
+pub(crate) use {
+    bits::select,
+    norm::{sum_of_squares, SQUARES_UNDERFLOW},
+};
 
 /// Four-quadrant arctangent of `y / x`, in [-pi, pi], with IEEE 754's
 /// results for zeros and infinities (`atan2(+-0, -0) = +-pi`,

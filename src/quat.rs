@@ -22,6 +22,7 @@ mod from_matrix;
 mod interpolate;
 mod power;
 mod rotation_arc;
+mod slerp_slice;
 
 pub use euler::EulerRot;
 

@@ -620,3 +620,67 @@ fn piecewise_slerp_jumps_at_the_keys_where_catmull_rom_does_not() {
     );
     assert!(spline_jump < 1e-3, "{spline_jump}");
 }
+
+/// Pairs for the slice laws: random unit pairs mixed with slerp's edge
+/// classes (identical, antipodal, nearly identical, a little off unit norm)
+/// and with raw bit patterns and edge values (NaN, infinities, subnormals).
+fn slice_pair() -> impl Strategy<Value = (Quat, Quat)> {
+    use rigtform_proofs::edge::EDGE_F32;
+    let edge = prop::sample::select(EDGE_F32.to_vec());
+    let raw = || {
+        prop::array::uniform4(any::<u32>()).prop_map(|b| {
+            let [w, x, y, z] = b.map(f32::from_bits);
+            Quat::new(w, x, y, z)
+        })
+    };
+    prop_oneof![
+        4 => (unit_quat(), unit_quat()),
+        1 => unit_quat().prop_map(|a| (a, a)),
+        1 => unit_quat().prop_map(|a| (a, -a)),
+        1 => (unit_quat(), 1e-7f32..1e-2).prop_map(|(a, t)| (a, a * Quat::from_rotation_y(t))),
+        1 => (unit_quat(), unit_quat(), 0.99f32..1.01).prop_map(|(a, b, s)| (a, Quat::new(b.w * s, b.x * s, b.y * s, b.z * s))),
+        1 => (raw(), raw()),
+        1 => (unit_quat(), edge.clone(), 0usize..4).prop_map(|(a, e, i)| {
+            let mut c = [a.w, a.x, a.y, a.z];
+            if let Some(c) = c.get_mut(i) {
+                *c = e;
+            }
+            (Quat::new(c[0], c[1], c[2], c[3]), a)
+        }),
+    ]
+}
+
+/// `alpha` for the slice laws: inside [0, 1] mostly (the vectorized
+/// evaluation), its ends, extrapolation and edge values.
+fn slice_alpha() -> impl Strategy<Value = f32> {
+    prop_oneof![
+        4 => 0.0f32..=1.0,
+        1 => prop::sample::select(vec![0.0, -0.0, 1.0, 1e-45, 1.0 - f32::EPSILON / 2.0, f32::NAN, f32::INFINITY]),
+        1 => -2.0f32..3.0,
+        1 => any::<u32>().prop_map(f32::from_bits),
+    ]
+}
+
+/// 70 pairs: a full block of the vectorized evaluation (64) and part of
+/// another.
+const SLICE_LEN: usize = 70;
+
+proptest! {
+    // Each case draws 70 pairs: the unit quaternions' rejection sampling
+    // rejects more than proptest's default allows over a run.
+    #![proptest_config(ProptestConfig { cases: 400, max_local_rejects: u32::MAX, ..ProptestConfig::default() })]
+
+    #[test]
+    fn law_slerp_slice_is_slerp_bit_for_bit(pairs in prop::collection::vec(slice_pair(), SLICE_LEN), alpha in slice_alpha()) {
+        let starts: [Quat; SLICE_LEN] = core::array::from_fn(|i| pairs[i].0);
+        let ends: [Quat; SLICE_LEN] = core::array::from_fn(|i| pairs[i].1);
+        assert_holds(laws::slerp_slice_is_slerp_bit_for_bit(&starts, &ends, alpha));
+    }
+
+    #[test]
+    fn law_interpolate_slice_is_interpolate_bit_for_bit(pairs in prop::collection::vec((slice_pair(), vec3(), vec3()), SLICE_LEN), alpha in slice_alpha()) {
+        let starts: [RigTForm; SLICE_LEN] = core::array::from_fn(|i| RigTForm::new(pairs[i].1, pairs[i].0 .0));
+        let ends: [RigTForm; SLICE_LEN] = core::array::from_fn(|i| RigTForm::new(pairs[i].2, pairs[i].0 .1));
+        assert_holds(laws::interpolate_slice_is_interpolate_bit_for_bit(&starts, &ends, alpha));
+    }
+}

@@ -7,7 +7,12 @@
 //! input slice is hidden behind `black_box` (nothing is known about it at
 //! compile time) and so is every result (nothing is vectorized across
 //! inputs or left out); criterion reports the time per iteration, and the
-//! README's table divides its median by 1,024.
+//! performance page's table (docs/performance.md) divides its median by
+//! 1,024.
+//!
+//! The two slice benchmarks (`slerp slice`, `RigTForm interpolate slice`)
+//! time rigtform's slice APIs over all 1,024 pairs with one `alpha` against
+//! a loop of each peer's single call over the same pairs.
 //!
 //! `cargo bench -p rigtform-compare --bench ops` runs them all, operation by
 //! operation; `cargo bench -p rigtform-compare --bench ops -- slerp` only the
@@ -51,6 +56,47 @@ fn run<I: Copy + 'static, O>(
     jobs.push((op, Box::new(job)));
 }
 
+/// The one `alpha` of the slice benchmarks (hidden behind `black_box`).
+const SLICE_ALPHA: f32 = 0.37;
+
+/// Adds the benchmark of `f` over the whole of `starts` and `ends` at once
+/// (a slice API, or a loop of single calls) into an output slice of the same
+/// length, with [`SLICE_ALPHA`], to `jobs`.
+fn run_slice<I: Copy + 'static, O: Copy + 'static>(
+    jobs: &mut Vec<Job>,
+    op: &'static str,
+    library: &'static str,
+    (starts, ends): (&'static [I], &'static [I]),
+    init: O,
+    f: impl Fn(&[I], &[I], f32, &mut [O]) + 'static,
+) {
+    let job = move |c: &mut Criterion| {
+        let mut out = vec![init; starts.len()];
+        group(c, op).bench_function(library, |b| {
+            b.iter(|| {
+                f(
+                    black_box(starts),
+                    black_box(ends),
+                    black_box(SLICE_ALPHA),
+                    &mut out,
+                );
+                black_box(&mut out);
+            })
+        });
+    };
+    jobs.push((op, Box::new(job)));
+}
+
+/// A loop of `f` over the pairs of a slice benchmark: what a peer without
+/// a slice API is called as.
+fn each_pair<I: Copy, O>(f: impl Fn(I, I, f32) -> O) -> impl Fn(&[I], &[I], f32, &mut [O]) {
+    move |starts, ends, alpha, out| {
+        for ((&a, &b), o) in starts.iter().zip(ends).zip(out.iter_mut()) {
+            *o = f(a, b, alpha);
+        }
+    }
+}
+
 /// `value`, kept for the rest of the process (the jobs refer to it).
 fn keep<T>(value: T) -> &'static T {
     Box::leak(Box::new(value))
@@ -66,6 +112,7 @@ fn group<'a>(c: &'a mut Criterion, name: &str) -> Group<'a> {
 /// and rigid body transforms `T` (whatever the library has for them).
 struct Prepared<Q, V, T> {
     q: Vec<Q>,
+    b: Vec<Q>,
     qq: Vec<(Q, Q)>,
     qv: Vec<(Q, V)>,
     qa: Vec<(Q, f32)>,
@@ -74,6 +121,7 @@ struct Prepared<Q, V, T> {
     /// segment) and a parameter in [0, 1].
     q4a: Vec<([Q; 4], f32)>,
     tf: Vec<T>,
+    tf_b: Vec<T>,
     tf2: Vec<(T, T)>,
     tfv: Vec<(T, V)>,
     tfa: Vec<(T, T, f32)>,
@@ -118,7 +166,9 @@ impl<Q: Copy, V: Copy, T: Copy> Prepared<Q, V, T> {
             tfv: tf.iter().zip(&u).map(|(&a, &u)| (a, u)).collect(),
             tfa: (0..N).map(|i| (tf[i], tf_b[i], t[i])).collect(),
             q,
+            b,
             tf,
+            tf_b,
         }
     }
 }
@@ -167,6 +217,24 @@ macro_rules! glam_benches {
             name,
             &p.tfa,
             |((t1, r1), (t2, r2), a)| (t1.lerp(t2, a), r1.slerp(r2, a)),
+        );
+        run_slice(
+            $c,
+            "slerp slice",
+            name,
+            (&p.q, &p.b),
+            $glam::Quat::IDENTITY,
+            each_pair(|a: $glam::Quat, b, t| a.slerp(b, t)),
+        );
+        run_slice(
+            $c,
+            "RigTForm interpolate slice",
+            name,
+            (&p.tf, &p.tf_b),
+            ($glam::Vec3::ZERO, $glam::Quat::IDENTITY),
+            each_pair(|(t1, r1): ($glam::Vec3, $glam::Quat), (t2, r2), a| {
+                (t1.lerp(t2, a), r1.slerp(r2, a))
+            }),
         );
         run($c, "Matrix4 from RigTForm", name, &p.tf, |(t, r)| {
             $glam::Mat4::from_rotation_translation(r, t)
@@ -233,6 +301,22 @@ fn quat_ops(c: &mut Criterion) {
         run(jobs, "RigTForm interpolate", name, &p.tfa, |(a, b, t)| {
             a.interpolate(b, t)
         });
+        run_slice(
+            jobs,
+            "slerp slice",
+            name,
+            (&p.q, &p.b),
+            Quat::IDENTITY,
+            Quat::slerp_slice,
+        );
+        run_slice(
+            jobs,
+            "RigTForm interpolate slice",
+            name,
+            (&p.tf, &p.tf_b),
+            RigTForm::IDENTITY,
+            RigTForm::interpolate_slice,
+        );
         run(jobs, "Matrix4 from RigTForm", name, &p.tf, Matrix4::from);
         run(jobs, "normal_matrix", name, mats, Matrix4::normal_matrix);
     }
@@ -240,7 +324,7 @@ fn quat_ops(c: &mut Criterion) {
     if !cfg!(feature = "fast-math") {
         peers(jobs, &inp);
     }
-    // Operation by operation, in the order of the README's table (a stable
+    // Operation by operation, in the order of the performance page's table (a stable
     // sort keeps rigtform first within each).
     jobs.sort_by_key(|&(op, _)| OPS.iter().position(|&o| o == op));
     for (_, job) in jobs.iter() {
@@ -249,9 +333,9 @@ fn quat_ops(c: &mut Criterion) {
 }
 
 /// The operations, in the order they are run and tabulated (`cargo xtask
-/// perf-report` takes the README table's rows in the order `--list` prints
+/// perf-report` takes the performance page's rows in the order `--list` prints
 /// them).
-const OPS: [&str; 17] = [
+const OPS: [&str; 19] = [
     "q*q",
     "q*q renormalized",
     "rotate Cvec3",
@@ -267,6 +351,8 @@ const OPS: [&str; 17] = [
     "RigTForm inv",
     "RigTForm * point",
     "RigTForm interpolate",
+    "slerp slice",
+    "RigTForm interpolate slice",
     "Matrix4 from RigTForm",
     "normal_matrix",
 ];
@@ -317,6 +403,22 @@ fn peers(jobs: &mut Vec<Job>, inp: &Inputs) {
         run(jobs, "RigTForm interpolate", name, &p.tfa, |(a, b, t)| {
             a.lerp_slerp(&b, t)
         });
+        run_slice(
+            jobs,
+            "slerp slice",
+            name,
+            (&p.q, &p.b),
+            nalgebra::UnitQuaternion::identity(),
+            each_pair(|a: nalgebra::UnitQuaternion<f32>, b, t| a.slerp(&b, t)),
+        );
+        run_slice(
+            jobs,
+            "RigTForm interpolate slice",
+            name,
+            (&p.tf, &p.tf_b),
+            nalgebra::Isometry3::identity(),
+            each_pair(|a: nalgebra::Isometry3<f32>, b, t| a.lerp_slerp(&b, t)),
+        );
         run(jobs, "Matrix4 from RigTForm", name, &p.tf, |a| {
             a.to_homogeneous()
         });
@@ -375,7 +477,7 @@ fn peers(jobs: &mut Vec<Job>, inp: &Inputs) {
 }
 
 fn config() -> Criterion {
-    // 17 operations, up to 6 libraries each, about 3 s per benchmark: the
+    // 19 operations, up to 6 libraries each, about 3 s per benchmark: the
     // median of 30 samples of 1,024 calls, for ratios on a shared machine.
     Criterion::default()
         .sample_size(30)

@@ -1,7 +1,8 @@
 //! `RigTForm` on raw bit patterns: product with the inverse, inverse of the
 //! inverse, agreement with `Matrix4::inverse` and with the matrix's action
-//! on points and vectors, interpolation exact at zero, the spline's
-//! translation as the cubic, and no panic on anything.
+//! on points and vectors, interpolation exact at zero, `interpolate_slice`
+//! equal to `interpolate` bit for bit, the spline's translation as the
+//! cubic, and no panic on anything.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -49,6 +50,11 @@ fuzz_target!(|input: Input| {
     // No panic on anything.
     let _ = (a * b, a.inv(), a.interpolate(b, input.alpha), a * c);
     let _ = Matrix4::from(a).inverse();
+    assert_holds(laws::interpolate_slice_is_interpolate_bit_for_bit(
+        &[a, b, a],
+        &[b, a, a],
+        input.alpha,
+    ));
     let _ = RigTForm::catmull_rom(&[a, b, a * b], input.alpha);
     let spline_ok = |v: Cvec3| [v.x, v.y, v.z].iter().all(|c| c.abs() <= SPLINE_LIMIT);
     if input.alpha.is_finite() && [a.t, b.t, p].into_iter().all(spline_ok) {

@@ -1,9 +1,9 @@
-//! `slerp`, `nlerp`, `blend` and `Quat::catmull_rom` on raw bit patterns
-//! (contract item 3): unit results for unit inputs and every finite alpha,
-//! exactness at alpha = 0, the short way at constant angular velocity, the
-//! rotation of the notes' formula in `f64` for alpha in [-1, 2], the
-//! spline's keys and left invariance, NaN out for NaN in, and no panic on
-//! anything.
+//! `slerp`, `nlerp`, `blend`, `slerp_slice` and `Quat::catmull_rom` on raw
+//! bit patterns (contract item 3): unit results for unit inputs and every
+//! finite alpha, exactness at alpha = 0, the short way at constant angular
+//! velocity, the rotation of the notes' formula in `f64` for alpha in
+//! [-1, 2], the slice equal to slerp bit for bit, the spline's keys and
+//! left invariance, NaN out for NaN in, and no panic on anything.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;

@@ -45,7 +45,8 @@ fn within_limit(q: Quat) -> bool {
 
 /// The `slerp` target on the quaternions `a`, `b`, `c` (as `[w, x, y, z]`),
 /// `alpha` and three blend weights: `slerp`, `nlerp`, `blend` and
-/// `Quat::catmull_rom` never panic; NaN out for NaN in; exactness at
+/// `Quat::catmull_rom` never panic; NaN out for NaN in; `slerp_slice` is
+/// slerp bit for bit on the raw, normalized and edge pairs; exactness at
 /// `alpha = 0`; for the normalized inputs, unit results, the short way, the
 /// notes' rotation for `alpha` in [-1, 2], the turn by `alpha` times the
 /// angle, the spline's keys, unit norm, left invariance and two-key path,
@@ -66,6 +67,14 @@ pub fn slerp(a: [f32; 4], b: [f32; 4], c: [f32; 4], alpha: f32, weights: [f32; 3
     // No panic on anything; NaN or infinity in, NaN out.
     let _ = (a.slerp(b, alpha), a.nlerp(b, alpha));
     let _ = Quat::blend(&[(a, weights[0]), (b, weights[1]), (c, weights[2])]);
+    // The raw inputs, their normalized versions and the edge pairs, side by
+    // side in one slice.
+    let units = [unit(a), unit(b), unit(c)].map(|u| u.unwrap_or(Quat::IDENTITY));
+    let starts = [a, b, c, units[0], units[0], units[0], units[1]];
+    let ends = [b, c, a, units[1], units[0], -units[0], units[2]];
+    assert_holds(laws::slerp_slice_is_slerp_bit_for_bit(
+        &starts, &ends, alpha,
+    ));
     // The spline through a, b, c at alpha: the keys themselves at whole
     // alpha and beyond the ends, whatever their bits.
     let keys = [a, b, c];

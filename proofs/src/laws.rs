@@ -142,6 +142,13 @@ fn is_nan_quat(q: Quat) -> bool {
     q.w.is_nan() && q.x.is_nan() && q.y.is_nan() && q.z.is_nan()
 }
 
+/// The same bits, or both NaN, component by component.
+fn same_floats<const N: usize>(a: [f32; N], b: [f32; N]) -> bool {
+    a.iter()
+        .zip(&b)
+        .all(|(x, y)| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()))
+}
+
 fn same_bits(a: Quat, b: Quat) -> bool {
     [a.w, a.x, a.y, a.z].map(f32::to_bits) == [b.w, b.x, b.y, b.z].map(f32::to_bits)
 }
@@ -515,6 +522,59 @@ pub fn rigid_matrix_moves_points_as_the_transform(a: RigTForm, c: Cvec4) -> Verd
 /// Preconditions: `a` and `b` finite, components at most 2^60.
 pub fn interpolate_is_exact_at_zero(a: RigTForm, b: RigTForm) -> Verdict {
     yes_or_no("interpolate_is_exact_at_zero", a.interpolate(b, 0.0) == a)
+}
+
+/// `Quat::slerp_slice` is `slerp` element by element, bit for bit (a NaN
+/// where slerp's is NaN: Rust leaves the sign and payload of a NaN result
+/// unspecified, and the compiler may swap a product's operands), for any
+/// input bits and any `alpha`; and slices of different lengths write the
+/// shortest length, leaving the rest of `out` as it was.
+///
+/// Preconditions: none.
+pub fn slerp_slice_is_slerp_bit_for_bit<const N: usize>(
+    starts: &[Quat; N],
+    ends: &[Quat; N],
+    alpha: f32,
+) -> Verdict {
+    let mut out = [Quat::NAN; N];
+    Quat::slerp_slice(starts, ends, alpha, &mut out);
+    let floats = |q: Quat| [q.w, q.x, q.y, q.z];
+    let same = starts
+        .iter()
+        .zip(ends)
+        .zip(&out)
+        .all(|((&a, &b), &o)| same_floats(floats(o), floats(a.slerp(b, alpha))));
+    yes_or_no("slerp_slice_is_slerp_bit_for_bit", same)?;
+    // One start fewer: the last element of out is not written.
+    let mut short = [Quat::NAN; N];
+    let fewer = starts.split_last().map_or(&[][..], |(_, rest)| rest);
+    Quat::slerp_slice(fewer, ends, alpha, &mut short);
+    let kept = short.last().is_none_or(|&q| same_bits(q, Quat::NAN));
+    let mut written = fewer.iter().zip(&out).zip(&short);
+    let same = written.all(|((_, &o), &s)| same_floats(floats(o), floats(s)));
+    yes_or_no("slerp_slice_is_slerp_bit_for_bit (shorter)", same && kept)
+}
+
+/// `RigTForm::interpolate_slice` is `interpolate` element by element, bit
+/// for bit (a NaN where interpolate's is NaN, as for
+/// [`slerp_slice_is_slerp_bit_for_bit`]), for any input bits and any
+/// `alpha`.
+///
+/// Preconditions: none.
+pub fn interpolate_slice_is_interpolate_bit_for_bit<const N: usize>(
+    starts: &[RigTForm; N],
+    ends: &[RigTForm; N],
+    alpha: f32,
+) -> Verdict {
+    let mut out = [RigTForm::IDENTITY; N];
+    RigTForm::interpolate_slice(starts, ends, alpha, &mut out);
+    let floats = |a: RigTForm| [a.t.x, a.t.y, a.t.z, a.r.w, a.r.x, a.r.y, a.r.z];
+    let same = starts
+        .iter()
+        .zip(ends)
+        .zip(&out)
+        .all(|((&a, &b), &o)| same_floats(floats(o), floats(a.interpolate(b, alpha))));
+    yes_or_no("interpolate_slice_is_interpolate_bit_for_bit", same)
 }
 
 /// `Matrix4::inverse` and `normal_matrix` give `None` or finite entries,

@@ -8,7 +8,7 @@ use super::sqrt::sqrt;
 /// A component whose square underflows contributes at most 2^-150 of absolute
 /// error, so above this threshold the relative error it causes is at most
 /// 2^-50, far below one ulp (2^-24).
-const SQUARES_UNDERFLOW: f32 = f32::from_bits((127 - 100) << 23);
+pub(crate) const SQUARES_UNDERFLOW: f32 = f32::from_bits((127 - 100) << 23);
 /// 2^100, exact scale for small inputs: when the sum of squares is below
 /// 2^-100, every component is below 2^-50 and becomes less than 2^50, while
 /// the smallest subnormal (2^-149) becomes 2^-49, whose square is normal.
@@ -86,8 +86,10 @@ pub(crate) fn scale_for_squares(v: [f32; 4]) -> ScaledSquares {
     }
 }
 
+/// `a^2 + b^2 + c^2 + d^2`, in that order (slerp's slice evaluation must
+/// add them as `scale_for_squares` does, to agree with it bit for bit).
 #[inline]
-fn sum_of_squares([a, b, c, d]: [f32; 4]) -> f32 {
+pub(crate) fn sum_of_squares([a, b, c, d]: [f32; 4]) -> f32 {
     a * a + b * b + c * c + d * d
 }
 

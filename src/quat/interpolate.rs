@@ -24,10 +24,10 @@ const ALPHA_LIMIT_BITS: u32 = 0x7e00_0000;
 /// How far the ratio of two squared norms may be from 1 for slerp to treat
 /// the inputs as unit: well above the rounding of f32 unit quaternions
 /// (a few 1e-7), well below any real drift.
-const NEARLY_UNIT: f32 = 1e-6;
+pub(super) const NEARLY_UNIT: f32 = 1e-6;
 /// 2^-12 rad: below this, `sin(x) / sin(phi)` is `x / phi` to f32's
 /// precision (the two differ by less than `phi^2 / 6`, 2^-26).
-const SMALL_ANGLE: f32 = 1.0 / 4096.0;
+pub(super) const SMALL_ANGLE: f32 = 1.0 / 4096.0;
 
 impl Quat {
     /// Spherical linear interpolation, as the notes define it:
@@ -100,6 +100,10 @@ impl Quat {
     /// // The short way: -b is the same rotation as b.
     /// assert!(a.slerp(-b, 0.5).angle_to(Quat::from_rotation_z(PI / 4.0)) < 1e-6);
     /// ```
+    // Inlined across crates on 64-bit desktop targets, where the call
+    // costs as much as a share of the work; one out-of-line copy elsewhere
+    // (flash on a Cortex-M4F).
+    #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
     #[must_use]
     pub fn slerp(self, other: Self, alpha: f32) -> Self {
         // The squared norms are sums of squares: NaN exactly for a NaN
@@ -268,6 +272,10 @@ impl Quat {
     /// assert!(a.nlerp(b, 0.5).angle_to(Quat::from_rotation_y(0.4)) < 1e-6);
     /// assert!(a.nlerp(-b, 0.5).angle_to(Quat::from_rotation_y(0.4)) < 1e-6);
     /// ```
+    // Inlined across crates on 64-bit desktop targets, where the call
+    // costs as much as a share of the work; one out-of-line copy elsewhere
+    // (flash on a Cortex-M4F).
+    #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
     #[must_use]
     pub fn nlerp(self, other: Self, alpha: f32) -> Self {
         let other = if self.dot(other) < 0.0 { -other } else { other };
@@ -276,7 +284,7 @@ impl Quat {
 
     /// `a self + b other`, component-wise.
     #[inline]
-    fn weighted_sum(self, a: f32, other: Self, b: f32) -> Self {
+    pub(super) fn weighted_sum(self, a: f32, other: Self, b: f32) -> Self {
         Self::new(
             a * self.w + b * other.w,
             a * self.x + b * other.x,

@@ -70,7 +70,7 @@ pub fn counts(extra: Option<&str>) -> Result<Vec<Op>> {
         .collect()
 }
 
-/// The number of inputs every operation was measured on (the README's text
+/// The number of inputs every operation was measured on (the performance page
 /// says it); fails if they differ.
 pub fn inputs(ops: &[Op]) -> Result<u32> {
     let first = ops.first().context("no operation")?.inputs;

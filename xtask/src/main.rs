@@ -16,13 +16,13 @@
 //!   the filter's state size on the target; fails unless a 6D update takes
 //!   at most 1,600 instructions, a 9D update at most 2,200, and the state
 //!   at most 256 bytes. CI runs it.
-//! - `cargo xtask perf-report [--draws N]`: the README's Performance
-//!   tables: criterion's medians on the host (`cargo bench -p
+//! - `cargo xtask perf-report [--draws N]`: the tables of the performance
+//!   page, `docs/performance.md`: criterion's medians on the host (`cargo bench -p
 //!   rigtform-compare --bench ops`, then rigtform's functions with
 //!   `fast-math`), the Cortex-M4F table, and the accuracy report on
 //!   1,000,000 draws per class with each backend; written between the
-//!   README's `perf-report` markers, the README replaced only when all of
-//!   it succeeded.
+//!   page's `perf-report` markers, the page replaced only when all of it
+//!   succeeded.
 //!
 //! How an instruction count is made: the firmware (`embedded/src/bin/`)
 //! calls the two marker functions of `embedded/src/measure.rs` around each
@@ -44,7 +44,7 @@
 mod criterion;
 mod firmware;
 mod m4f;
-mod readme;
+mod page;
 mod report;
 mod tools;
 mod trace;
@@ -91,7 +91,7 @@ enum Cmd {
         #[arg(long)]
         features: Option<String>,
     },
-    /// Regenerates the README's Performance tables (about 10 minutes)
+    /// Regenerates the tables of docs/performance.md (about 10 minutes)
     PerfReport {
         /// Draws per class of the accuracy report
         #[arg(long, default_value_t = 1_000_000)]

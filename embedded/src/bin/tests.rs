@@ -262,6 +262,48 @@ fn main() -> ! {
         })
     });
     t.check(
+        "slerp_slice_is_slerp_bit_for_bit (8 pairs per slice)",
+        || {
+            let (mut units, mut edges) = (unit_pairs(24), degenerate_pairs(25));
+            each(0..DRAWS / 8, |i| {
+                let pairs: [(Quat, Quat); 8] = core::array::from_fn(|k| {
+                    let pair = if k % 2 == 0 {
+                        units.next()
+                    } else {
+                        edges.next()
+                    };
+                    pair.unwrap_or((Quat::IDENTITY, Quat::IDENTITY))
+                });
+                let alpha = ALPHAS
+                    .get(i as usize % ALPHAS.len())
+                    .copied()
+                    .unwrap_or(0.5);
+                laws::slerp_slice_is_slerp_bit_for_bit(
+                    &pairs.map(|p| p.0),
+                    &pairs.map(|p| p.1),
+                    alpha,
+                )
+            })
+        },
+    );
+    t.check(
+        "interpolate_slice_is_interpolate_bit_for_bit (8 per slice)",
+        || {
+            let (mut starts, mut ends) = (rig_tforms(26), rig_tforms(27));
+            each(0..DRAWS / 8, |i| {
+                let starts: [RigTForm; 8] =
+                    core::array::from_fn(|_| starts.next().unwrap_or(RigTForm::IDENTITY));
+                let ends: [RigTForm; 8] =
+                    core::array::from_fn(|_| ends.next().unwrap_or(RigTForm::IDENTITY));
+                let alpha = ALPHAS
+                    .get(i as usize % ALPHAS.len())
+                    .copied()
+                    .unwrap_or(0.5);
+                laws::interpolate_slice_is_interpolate_bit_for_bit(&starts, &ends, alpha)
+            })
+        },
+    );
+    t.check(
         "matrix_inverse_is_none_or_finite (random bits and edges)",
         || {
             let mut d = Draws::new(23);
