@@ -59,7 +59,7 @@ const MARKED: [Cvec3; 4] = [
 ];
 
 /// Colour of label bars and gaps.
-const BAR: [u8; 3] = [24, 24, 28];
+pub(crate) const BAR: [u8; 3] = [24, 24, 28];
 
 /// Height of the two-line label bar above each panel.
 pub const LABEL_BAR: u32 = 2 * GLYPH_SIZE + 8;
@@ -103,44 +103,17 @@ impl Demo {
     /// (coloured up to `alpha`, grey beyond).
     #[must_use]
     pub fn scene(&self, panel: &Panel, alpha: f32) -> Scene<'_> {
-        let mut draws = vec![Draw {
-            mesh: &self.ground,
-            placement: Placement::Rigid(RigTForm::IDENTITY),
-            scale: Cvec3::new(1.0, 1.0, 1.0),
-            tint: [1.0; 3],
-        }];
-        for k in 0..=TRAIL_MARKS {
+        let trail = (0..=TRAIL_MARKS).map(|k| {
             let a = k as f32 / TRAIL_MARKS as f32;
-            let placement = panel.placement(a);
-            for (point, color) in MARKED.iter().zip(MARK_COLORS) {
-                let p = apply(placement, *point);
-                // Marks already passed in colour, those ahead small and grey.
-                let (size, tint) = if a <= alpha + 1e-6 {
-                    (1.0, color)
-                } else {
-                    (0.6, [0.25; 3])
-                };
-                draws.push(Draw {
-                    mesh: &self.marker,
-                    placement: Placement::Rigid(RigTForm::from_translation(p)),
-                    scale: Cvec3::new(size, size, size),
-                    tint,
-                });
-            }
-        }
-        draws.push(Draw {
-            mesh: &self.body,
-            placement: panel.placement(alpha),
-            scale: Cvec3::new(1.0, 1.0, 1.0),
-            tint: [1.0; 3],
+            (a, 1.0, panel.placement(a))
         });
-        Scene {
+        let stage = Stage {
             camera: self.camera,
-            lights: [Cvec3::new(4.0, 8.0, 6.0), Cvec3::new(-6.0, 3.0, -2.0)],
-            intensity: [0.75, 0.3],
-            background: [0.42, 0.6, 0.85],
-            draws,
-        }
+            ground: &self.ground,
+            marker: &self.marker,
+            body: &self.body,
+        };
+        stage.scene(trail, alpha, panel.placement(alpha))
     }
 
     /// One frame of the animation: the panels side by side, each `width x
@@ -175,6 +148,65 @@ impl Demo {
             frame.blit(&label, x, 0);
         }
         frame
+    }
+}
+
+/// What every comparison draws in: the camera, the ground, the body and the
+/// mark of its paths.
+pub(crate) struct Stage<'a> {
+    pub(crate) camera: Camera,
+    pub(crate) ground: &'a Mesh,
+    pub(crate) marker: &'a Mesh,
+    pub(crate) body: &'a Mesh,
+}
+
+impl<'a> Stage<'a> {
+    /// The ground, then the marks of the body's origin and axis tips at the
+    /// placements of `trail` (`(time, size, placement)`: in colour up to
+    /// `now`, smaller and grey beyond), then the body at `at`, under the two
+    /// lights and the sky.
+    pub(crate) fn scene(
+        &self,
+        trail: impl Iterator<Item = (f32, f32, Placement)>,
+        now: f32,
+        at: Placement,
+    ) -> Scene<'a> {
+        let mut draws = vec![Draw {
+            mesh: self.ground,
+            placement: Placement::Rigid(RigTForm::IDENTITY),
+            scale: Cvec3::new(1.0, 1.0, 1.0),
+            tint: [1.0; 3],
+        }];
+        for (time, size, placement) in trail {
+            for (point, color) in MARKED.iter().zip(MARK_COLORS) {
+                let p = apply(placement, *point);
+                // Marks already passed in colour, those ahead small and grey.
+                let (size, tint) = if time <= now + 1e-6 {
+                    (size, color)
+                } else {
+                    (0.6 * size, [0.25; 3])
+                };
+                draws.push(Draw {
+                    mesh: self.marker,
+                    placement: Placement::Rigid(RigTForm::from_translation(p)),
+                    scale: Cvec3::new(size, size, size),
+                    tint,
+                });
+            }
+        }
+        draws.push(Draw {
+            mesh: self.body,
+            placement: at,
+            scale: Cvec3::new(1.0, 1.0, 1.0),
+            tint: [1.0; 3],
+        });
+        Scene {
+            camera: self.camera,
+            lights: [Cvec3::new(4.0, 8.0, 6.0), Cvec3::new(-6.0, 3.0, -2.0)],
+            intensity: [0.75, 0.3],
+            background: [0.42, 0.6, 0.85],
+            draws,
+        }
     }
 }
 

@@ -9,10 +9,10 @@
 
 use rigtform::{Cvec3, Quat, RigTForm};
 
-use crate::demo::{ARM, LABEL_BAR};
+use crate::demo::{Stage, ARM, BAR, LABEL_BAR};
 use crate::image::{Image, GLYPH_SIZE};
 use crate::mesh::Mesh;
-use crate::scene::{Camera, Draw, Scene, Settings};
+use crate::scene::{Camera, Scene, Settings};
 use crate::vertex::Placement;
 
 /// The five keyframes: the body crosses the ground from left to right,
@@ -169,23 +169,6 @@ pub struct SplineDemo {
     camera: Camera,
 }
 
-/// Colours of the path marks: origin, x tip, y tip, z tip.
-const MARK_COLORS: [[f32; 3]; 4] = [
-    [0.9, 0.8, 0.2],
-    [0.9, 0.15, 0.1],
-    [0.15, 0.75, 0.15],
-    [0.15, 0.3, 0.95],
-];
-/// Points of the body, in its object coordinates, whose paths are marked.
-const MARKED: [Cvec3; 4] = [
-    Cvec3::ZERO,
-    Cvec3::new(ARM, 0.0, 0.0),
-    Cvec3::new(0.0, ARM, 0.0),
-    Cvec3::new(0.0, 0.0, ARM),
-];
-/// Colour of label bars and gaps.
-const BAR: [u8; 3] = [24, 24, 28];
-
 impl SplineDemo {
     /// The comparison, drawing `body` (by default the axes body).
     #[must_use]
@@ -214,45 +197,19 @@ impl SplineDemo {
     /// path (coloured up to `t`, grey beyond, larger at the keys).
     #[must_use]
     pub fn scene(&self, method: Keyed, t: f32) -> Scene<'_> {
-        let mut draws = vec![Draw {
-            mesh: &self.ground,
-            placement: Placement::Rigid(RigTForm::IDENTITY),
-            scale: Cvec3::new(1.0, 1.0, 1.0),
-            tint: [1.0; 3],
-        }];
         let marks = MARKS_PER_KEY * DURATION as u32;
-        for k in 0..=marks {
+        let trail = (0..=marks).map(|k| {
             let at = k as f32 / MARKS_PER_KEY as f32;
-            let frame = method.at(&self.keys, at);
-            let key = if k % MARKS_PER_KEY == 0 { 1.6 } else { 1.0 };
-            for (point, color) in MARKED.iter().zip(MARK_COLORS) {
-                let p = (frame * rigtform::Cvec4::from_point(*point)).xyz();
-                let (size, tint) = if at <= t + 1e-6 {
-                    (key, color)
-                } else {
-                    (0.6 * key, [0.25; 3])
-                };
-                draws.push(Draw {
-                    mesh: &self.marker,
-                    placement: Placement::Rigid(RigTForm::from_translation(p)),
-                    scale: Cvec3::new(size, size, size),
-                    tint,
-                });
-            }
-        }
-        draws.push(Draw {
-            mesh: &self.body,
-            placement: Placement::Rigid(method.at(&self.keys, t)),
-            scale: Cvec3::new(1.0, 1.0, 1.0),
-            tint: [1.0; 3],
+            let size = if k % MARKS_PER_KEY == 0 { 1.6 } else { 1.0 };
+            (at, size, Placement::Rigid(method.at(&self.keys, at)))
         });
-        Scene {
+        let stage = Stage {
             camera: self.camera,
-            lights: [Cvec3::new(4.0, 8.0, 6.0), Cvec3::new(-6.0, 3.0, -2.0)],
-            intensity: [0.75, 0.3],
-            background: [0.42, 0.6, 0.85],
-            draws,
-        }
+            ground: &self.ground,
+            marker: &self.marker,
+            body: &self.body,
+        };
+        stage.scene(trail, t, Placement::Rigid(method.at(&self.keys, t)))
     }
 
     /// One frame at `alpha` in [0, 1] (time `alpha * DURATION`): the two
