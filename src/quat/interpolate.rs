@@ -348,6 +348,24 @@ mod tests {
     use super::*;
 
     #[test]
+    fn slerp_of_non_unit_inputs_ends_on_the_first_inputs_sphere() {
+        // Norms 2 and 3: the endpoint is b's rotation at a's norm.
+        let (a, b) = (Quat::from_rotation_x(0.4), Quat::from_rotation_y(1.3));
+        let (a2, b3) = (a.map(|c| 2.0 * c), b.map(|c| 3.0 * c));
+        for alpha in [0.5, 1.0] {
+            let got = a2.slerp(b3, alpha);
+            let tol = 8.0 * crate::accuracy::UNIT_NORM_ERROR;
+            assert!(
+                (got.norm() - 2.0).abs() < 2.0 * tol,
+                "{alpha}: {}",
+                got.norm()
+            );
+            let turn = 4.0 * crate::accuracy::SLERP_MAX_ANGLE_ERROR;
+            assert!(got.angle_to(a.slerp(b, alpha)) < turn, "{alpha}");
+        }
+    }
+
+    #[test]
     fn blend_and_nlerp_answer_on_the_side_of_their_first_input() {
         let a = Quat::from_rotation_x(0.4);
         let b = -Quat::from_rotation_y(0.9); // w < 0, the far side of a

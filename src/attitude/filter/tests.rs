@@ -559,3 +559,21 @@ fn diagnostics_flag_what_was_ignored() {
     g.update(Cvec3::ZERO, Quat::from_rotation_x(0.1) * level, 0.01);
     assert!(!g.diagnostics().acc_ignored && g.diagnostics().acc_error > 0.0);
 }
+
+#[test]
+fn horizontal_axes_are_the_first_two_rows_of_the_rotation_matrix() {
+    for q in [
+        Quat::from_rotation_x(0.7) * Quat::from_rotation_z(-2.1),
+        Quat::from_euler(crate::EulerRot::ZYX, 1.2, -0.4, 2.9),
+        Quat::from_rotation_y(3.0),
+    ] {
+        let [c0, c1, c2, _] = crate::Matrix4::from_quat(q).cols;
+        let rows = [Cvec3::new(c0.x, c1.x, c2.x), Cvec3::new(c0.y, c1.y, c2.y)];
+        for (got, want) in horizontal_axes(q).into_iter().zip(rows) {
+            assert!(
+                (got - want).norm() < 1e-6,
+                "{q:?}: {got:?} against {want:?}"
+            );
+        }
+    }
+}
