@@ -159,14 +159,7 @@ pub fn check_all(t: &mut Tally, draws: u32) {
             hard_iron: Cvec3::new(20.0, -5.0, 8.0),
             ..MagneticCalibration::IDENTITY
         };
-        let axes = [
-            Axis::PosX,
-            Axis::NegX,
-            Axis::PosY,
-            Axis::NegY,
-            Axis::PosZ,
-            Axis::NegZ,
-        ];
+        let axes = Axis::ALL;
         let mut worst: f32 = 0.0;
         let mut count = 0;
         for x in axes {

@@ -71,12 +71,7 @@ impl Demo {
     pub fn new(comparison: Comparison, body: Option<Mesh>) -> Self {
         Self {
             body: body.unwrap_or_else(|| Mesh::axes(ARM)),
-            ground: Mesh::ground(
-                [-8.0, 8.0],
-                [-12.0, 4.0],
-                16,
-                [[0.32, 0.36, 0.3], [0.5, 0.54, 0.46]],
-            ),
+            ground: checkered_ground(),
             marker: Mesh::sphere(0.07, 10, 6, [1.0; 3]),
             panels: comparison.panels(),
             camera: Camera::looking_at(Cvec3::new(0.0, 3.0, 5.4), Cvec3::new(0.0, 1.1, -0.2), 0.8),
@@ -208,6 +203,16 @@ impl<'a> Stage<'a> {
             draws,
         }
     }
+}
+
+/// The checkered ground both comparisons stand on.
+pub(crate) fn checkered_ground() -> Mesh {
+    Mesh::ground(
+        [-8.0, 8.0],
+        [-12.0, 4.0],
+        16,
+        [[0.32, 0.36, 0.3], [0.5, 0.54, 0.46]],
+    )
 }
 
 /// Where `placement` puts the object's point `p`, in world coordinates.

@@ -9,7 +9,7 @@
 
 use rigtform::{Cvec3, Quat, RigTForm};
 
-use crate::demo::{Stage, ARM, BAR, LABEL_BAR};
+use crate::demo::{checkered_ground, Stage, ARM, BAR, LABEL_BAR};
 use crate::image::{Image, GLYPH_SIZE};
 use crate::mesh::Mesh;
 use crate::scene::{Camera, Scene, Settings};
@@ -175,12 +175,7 @@ impl SplineDemo {
     pub fn new(body: Option<Mesh>) -> Self {
         Self {
             body: body.unwrap_or_else(|| Mesh::axes(ARM)),
-            ground: Mesh::ground(
-                [-8.0, 8.0],
-                [-12.0, 4.0],
-                16,
-                [[0.32, 0.36, 0.3], [0.5, 0.54, 0.46]],
-            ),
+            ground: checkered_ground(),
             marker: Mesh::sphere(0.06, 10, 6, [1.0; 3]),
             keys: keyframes(),
             camera: Camera::looking_at(Cvec3::new(0.0, 3.4, 6.2), Cvec3::new(0.0, 1.2, -0.2), 0.8),
