@@ -12,10 +12,12 @@
 //! | `float/reduce.rs` | reduction by quarter turns for every finite f32 (Payne and Hanek, in integers), into a head and a tail | checked through the sine and cosine beyond 3 pi/4 ([`SIN_COS_MAX_ULP`](crate::accuracy::SIN_COS_MAX_ULP)) |
 //! | `float/sqrt.rs` | the FPU's `vsqrt.f32` on Arm hard-float targets, libm's `sqrtf` elsewhere; on 64-bit desktop targets also `sqrt_by_newton`, the same results in arithmetic a loop can vectorize | 0.5 ulp |
 //! | `float/norm.rs` | the overflow- and underflow-free sum of squares behind every `norm` and `normalize` | 2 ulp |
+//! | `float/double.rs` | on x86-64 and AArch64 only: slerp's angle (`atan2` of a root, a degree-16 odd polynomial on [0, 1]) and sines (on [0, pi/2], degree 7) in f64 | [`ANGLE_F64_MAX_REL_ERROR`](crate::accuracy::ANGLE_F64_MAX_REL_ERROR), [`SIN_F64_MAX_REL_ERROR`](crate::accuracy::SIN_F64_MAX_REL_ERROR) |
 //! | `float/fast_math.rs` | `fast-math`: micromath's atan2, sin, cos and tan, guarded | [`accuracy`](crate::accuracy) |
 //!
-//! The default kernels evaluate nothing in f64, so on a Cortex-M4F
-//! (single-precision FPU) no soft-float helper is linked. Their
+//! The default kernels evaluate nothing in f64 but on 64-bit desktop
+//! targets (`float/double.rs`), so on a Cortex-M4F (single-precision FPU)
+//! no soft-float helper is linked. Their
 //! coefficients come from `tools/minimax.py` (Remez exchange in multiple
 //! precision), and the tests of each file sweep every 997th f32 of its
 //! range against f64 (every f32, with `exhaustive_kernel_sweep`). With
@@ -30,6 +32,11 @@
 #[cfg_attr(feature = "fast-math", allow(dead_code))]
 mod atan2;
 mod bits;
+#[cfg(all(
+    any(target_arch = "x86_64", target_arch = "aarch64"),
+    not(feature = "fast-math")
+))]
+mod double;
 #[cfg(feature = "fast-math")]
 mod fast_math;
 mod head_tail;
@@ -57,7 +64,8 @@ pub(crate) use sqrt::sqrt_by_newton;
 ))]
 pub(crate) use {
     bits::select,
-    norm::{sum_of_squares, SQUARES_UNDERFLOW},
+    double::{atan2_of_root, sin_to_quarter_turn},
+    norm::SQUARES_UNDERFLOW,
 };
 
 /// Four-quadrant arctangent of `y / x`, in [-pi, pi], with IEEE 754's

@@ -22,6 +22,11 @@ mod from_matrix;
 mod interpolate;
 mod power;
 mod rotation_arc;
+#[cfg(all(
+    any(target_arch = "x86_64", target_arch = "aarch64"),
+    not(feature = "fast-math")
+))]
+mod slerp_f64;
 mod slerp_slice;
 
 pub use euler::EulerRot;

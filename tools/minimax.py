@@ -2,13 +2,15 @@
 """Minimax coefficients of the polynomial kernels in src/float/ (atan2.rs, sin_cos.rs).
 
     pip install mpmath
-    python3 tools/minimax.py atan|sin|cos|constants
+    python3 tools/minimax.py atan|sin|cos|atan_f64|sin_f64|constants
 
 Remez exchange on a dense Chebyshev grid, in 50-digit arithmetic. Each
 kernel is `leading terms + x^k P(s)` with `s = x^2`; the script finds `P`
 that minimizes the largest weighted error (relative for atan and sin,
 absolute for cos) and prints its coefficients, the f32 each rounds to, and
-the approximation error. `constants` prints the split constants and the
+the approximation error. `atan_f64` and `sin_f64` are the wider-range
+kernels of `float/double.rs`, evaluated in f64: their coefficients are
+printed as f64. `constants` prints the split constants and the
 bits of 2/pi the argument reduction uses.
 """
 import struct
@@ -90,6 +92,27 @@ def cos():
     show("cos, degree 2 in r^2", *remez(g, w, 2, TINY, hi))
 
 
+def show_f64(name, c, e):
+    print(f"{name}: max weighted error {mp.nstr(e, 5)}")
+    for k, x in enumerate(c):
+        print(f"  s^{k}: {float(x)!r}")
+
+
+def atan_f64():
+    # atan(u) = u + u^3 P(u^2) on 0 <= u <= 1, relative error.
+    g = lambda s: (mp.atan(mp.sqrt(s)) - mp.sqrt(s)) / (s * mp.sqrt(s))
+    w = lambda s: s * mp.sqrt(s) / mp.atan(mp.sqrt(s))
+    show_f64("atan on [0, 1], degree 8 in u^2", *remez(g, w, 8, TINY, mp.mpf(1)))
+
+
+def sin_f64():
+    # sin(x) = x + x^3 P(x^2) on 0 <= x <= pi/2, relative error.
+    hi = (mp.pi / 2) ** 2
+    g = lambda s: (mp.sin(mp.sqrt(s)) - mp.sqrt(s)) / (s * mp.sqrt(s))
+    w = lambda s: s * mp.sqrt(s) / mp.sin(mp.sqrt(s))
+    show_f64("sin on [0, pi/2], degree 3 in x^2", *remez(g, w, 3, TINY, hi))
+
+
 def constants():
     for name, value in [("PIO2", mp.pi / 2), ("PIO4", mp.pi / 4), ("PI", mp.pi)]:
         head = f32(value)
@@ -105,4 +128,5 @@ def constants():
 
 
 if __name__ == "__main__":
-    {"atan": atan, "sin": sin, "cos": cos, "constants": constants}[sys.argv[1]]()
+    kernels = {"atan": atan, "sin": sin, "cos": cos, "atan_f64": atan_f64, "sin_f64": sin_f64}
+    {**kernels, "constants": constants}[sys.argv[1]]()

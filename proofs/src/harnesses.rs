@@ -21,9 +21,10 @@
 //! identity, whatever the angle, so the proof then covers every kernel that
 //! meets the contracts (which `src/float.rs` checks the crate's kernels
 //! meet), and nothing about the angle. `slerp`'s unit norm needs accurate
-//! angles, so its harnesses keep the real f32 kernels: polynomials, and
-//! for extrapolation beyond 3 pi/4 an argument reduction in integers that
-//! branches. They check the default backend; `fast-math`'s micromath
+//! angles, so its harnesses keep the real kernels: polynomials (on
+//! x86-64, where Kani runs, the f64 angle and sines of `float/double.rs`
+//! for `alpha` in (0, 1]), and for extrapolation beyond 3 pi/4 an argument
+//! reduction in integers that branches. They check the default backend; `fast-math`'s micromath
 //! kernels are not model-checked (the stand-in runs the bodies with both
 //! backends).
 //!

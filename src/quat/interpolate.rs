@@ -60,7 +60,14 @@ impl Quat {
     /// Rounding errors common to both coefficients only scale the result,
     /// and each endpoint is reached exactly (`slerp_in_plane`). Like `pow`,
     /// this is scale-free: inputs a little off unit norm still give the
-    /// rotation between them. For extrapolation (where the two coefficients
+    /// rotation between them. On x86-64 and AArch64, where an f64
+    /// operation costs what an f32 one does, `alpha` in (0, 1] takes the
+    /// same formula with `phi` from the wedge of the inputs and the sines in
+    /// f64 (`quat/slerp_f64.rs`): one polynomial each, no branch that random
+    /// inputs mispredict, and coefficients rounded to f32 once; inputs it
+    /// does not take (norms more than 1e-6 apart, components beyond 2^16,
+    /// angles of 2^-12 rad or less) go the way described here. For
+    /// extrapolation (where the two coefficients
     /// grow and their rounding would show in the norm), and with the
     /// `fast-math` feature (whose sines have absolute, not relative,
     /// errors), the notes' formula itself is evaluated as a turn by
@@ -106,6 +113,13 @@ impl Quat {
     #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
     #[must_use]
     pub fn slerp(self, other: Self, alpha: f32) -> Self {
+        #[cfg(all(
+            any(target_arch = "x86_64", target_arch = "aarch64"),
+            not(feature = "fast-math")
+        ))]
+        if let Some(q) = self.slerp_f64(other, alpha) {
+            return q;
+        }
         // The squared norms are sums of squares: NaN exactly for a NaN
         // component, infinite for an infinite one or where they overflow
         // (components beyond about 1e19, where the products below would

@@ -18,17 +18,17 @@ impl Quat {
     /// # How it is evaluated
     ///
     /// On x86-64 and AArch64 (without `fast-math`), for `alpha` in (0, 1],
-    /// the pairs go through slerp's in-plane formula written without a
-    /// branch, blocks of 64 pairs at a time, which the compiler vectorizes
-    /// (4 pairs at once with SSE2, 8 with AVX2). Its square root is
+    /// the pairs go through the evaluation `slerp` itself takes there (its
+    /// angle and sines in f64), written without a branch, blocks of 64
+    /// pairs at a time, which the compiler vectorizes. Its square root is
     /// `float::sqrt_by_newton`, plain arithmetic, correctly rounded like
     /// the square root of the single call. Every operation is the single
     /// call's, in its order, so the results agree bit for bit where that
-    /// formula is the one `slerp` takes; the pairs where it is not (not
+    /// evaluation is the one `slerp` takes; the pairs where it is not (not
     /// finite or not within 2^16 per component, 2^-12 rad apart or less,
-    /// norms more than 1e-6 apart, a difference small enough to be
-    /// rescaled) are then done again by `slerp` itself. Every other
-    /// `alpha`, and every other target, is a loop of `slerp`.
+    /// norms more than 1e-6 apart, a wedge small enough to underflow) are
+    /// then done again by `slerp` itself. Every other `alpha`, and every
+    /// other target, is a loop of `slerp`.
     ///
     /// # Preconditions
     ///
@@ -70,17 +70,17 @@ impl Quat {
     not(feature = "fast-math")
 ))]
 mod lanes {
-    use super::super::interpolate::{NEARLY_UNIT, SMALL_ANGLE};
+    use super::super::slerp_f64::{Pair, SMALL_ANGLE_F64};
     use super::Quat;
-    use crate::float::{self, select, sqrt_by_newton, sum_of_squares, SQUARES_UNDERFLOW};
+    use crate::float::{select, sqrt_by_newton};
 
     /// Pairs per block: the flags of a block live on the stack.
     const BLOCK: usize = 64;
 
-    /// 2^16, the largest magnitude of a component the lanes
-    /// take: the products and sums of squares below stay far from
-    /// overflow (at most 2^104), so no operation makes an infinity, and
-    /// none a NaN.
+    /// 2^16, the largest magnitude of a component the lanes take (that of
+    /// the f64 evaluation, whose squared norms are at most 2^32): larger
+    /// ones, NaN and infinities are replaced before any arithmetic, so that
+    /// no operation makes an infinity, and none a NaN.
     const LANE_LIMIT: f32 = 65_536.0;
 
     /// [`Quat::slerp_slice`] for `alpha` in (0, 1].
@@ -103,15 +103,13 @@ mod lanes {
         }
     }
 
-    /// Slerp's in-plane evaluation of `a` to `b` by `alpha` in (0, 1],
-    /// without a branch, and whether it is what `slerp` returns (when it
-    /// is not, the value is some finite quaternion, to be replaced).
-    /// Operation for operation `Quat::slerp` and its `slerp_in_plane`, with
-    /// `u.scale == 1` and with `sqrt_by_newton` for `float::sqrt`.
+    /// `Quat::slerp_f64` without a branch: the same functions on the same
+    /// numbers (with `sqrt_by_newton` for the square root, which agrees
+    /// with the crate's bit for bit), and whether its result is what
+    /// `slerp` returns (when it is not, the value is some finite
+    /// quaternion, to be replaced).
     #[inline(always)]
     fn in_plane(a: Quat, b: Quat, alpha: f32) -> (Quat, bool) {
-        // Out-of-range components (NaN and infinities among them) are
-        // replaced before any arithmetic; their pair goes to slerp.
         let within = |q: Quat| {
             (q.w.abs() <= LANE_LIMIT)
                 & (q.x.abs() <= LANE_LIMIT)
@@ -121,30 +119,13 @@ mod lanes {
         let bounded = within(a) & within(b);
         let a = a.map(|c| select(bounded, c, 1.0));
         let b = b.map(|c| select(bounded, c, 1.0));
-
-        let dot = a.dot(b);
-        let flip = 1.0f32.copysign(dot);
-        let b = b.map(|c| c * flip);
-        let dot = dot * flip;
-        let n2 = a.norm_squared();
-        let u = b.weighted_sum(n2, a, -dot);
-        let sum = sum_of_squares(u.to_array());
-        let n = sqrt_by_newton(n2);
-        let beta = sqrt_by_newton(sum);
-        let phi = float::atan2(beta, n * dot * 1.0);
-
-        let far = alpha * phi;
-        let near = phi - far;
-        let wide = phi > SMALL_ANGLE;
-        let (s0, s1, sin_phi) = float::sin3(near, far, phi);
-        // sin(phi) > 0 where phi > 2^-12; elsewhere 1, so that nothing
-        // divides by zero.
-        let r = 1.0 / select(wide, sin_phi, 1.0);
-        let (c0, c1) = (s0 * r, s1 * r);
-        let on2 = b.norm_squared();
-        #[allow(clippy::neg_cmp_op_on_partial_ord)]
-        let near_unit = !((n2 - on2).abs() > NEARLY_UNIT * on2);
-        let done = bounded & (sum >= SQUARES_UNDERFLOW) & wide & near_unit;
-        (a.weighted_sum(c0, b, c1), done)
+        let mut pair = Pair::of(a, b);
+        let applies = bounded & pair.applies();
+        // A positive squared wedge where the evaluation does not apply
+        // (it may be zero or lost to underflow there): no division by zero.
+        pair.wedge = select(applies, pair.wedge, 1.0);
+        let phi = pair.angle(sqrt_by_newton);
+        let done = applies & (phi > SMALL_ANGLE_F64);
+        (pair.slerp(a, b, phi, alpha, sqrt_by_newton), done)
     }
 }

@@ -1,0 +1,161 @@
+//! Slerp's in-plane formula with its angle and sines in f64, on x86-64
+//! and AArch64: what [`Quat::slerp`] returns there for `alpha` in (0, 1],
+//! and what the vectorized lanes of [`Quat::slerp_slice`] compute, one set
+//! of functions for both, so that the two agree bit for bit.
+//!
+//! The angle comes from the wedge of the two inputs, not from a rotation
+//! between them: `|a ^ b|^2`, the sum of the squares of the six 2x2 minors
+//! of `a` and `b`, is `|a|^2 |b|^2 sin^2(phi)` and needs neither their dot
+//! product nor their norms first, so it starts as soon as the inputs are
+//! loaded; `phi = atan2(|a ^ b|, |a . b|)`. With `r = |a| |b| / |a ^ b|`
+//! (`1 / sin(phi)`, from the same two numbers, so that it agrees with
+//! `phi`) the result is `sin((1 - alpha) phi) r a + sin(alpha phi) r b`,
+//! `b` negated when the dot product is negative (the notes' `cn`).
+
+use super::interpolate::{NEARLY_UNIT, SMALL_ANGLE};
+use super::Quat;
+use crate::float::{atan2_of_root, sin_to_quarter_turn, SQUARES_UNDERFLOW};
+
+/// 2^32, the largest squared norm the evaluation takes: components below
+/// 2^16, whose products and sums of squares stay far from overflow (at
+/// most 2^69), so that no operation makes an infinity, and none a NaN.
+pub(super) const NORM_SQUARED_LIMIT: f32 = 4_294_967_296.0;
+
+/// 2^100: `1 / sin^2(phi)` is below 2^26 wherever the evaluation's result
+/// is used (`phi > SMALL_ANGLE`); elsewhere (in vectorized lanes, whose
+/// result is then replaced) it is clamped here, to stay finite in f32.
+const INVERSE_SINE_SQUARED_LIMIT: f64 = 1.267_650_600_228_229_4e30;
+
+/// What the evaluation needs of a pair `(a, b)`: squared norms, dot
+/// product and squared wedge.
+#[derive(Clone, Copy)]
+pub(super) struct Pair {
+    /// `|a|^2`.
+    pub(super) n2: f32,
+    /// `|b|^2`.
+    pub(super) on2: f32,
+    /// `a . b`.
+    pub(super) dot: f32,
+    /// `|a ^ b|^2 = |a|^2 |b|^2 - (a . b)^2`, without the cancellation.
+    pub(super) wedge: f32,
+}
+
+impl Pair {
+    /// The squared norms, dot product and squared wedge of `a` and `b`.
+    ///
+    /// # Preconditions
+    ///
+    /// Components within 2^16 in magnitude (where nothing overflows);
+    /// [`Quat::slerp`] checks the squared norms first.
+    #[inline(always)]
+    pub(super) fn of(a: Quat, b: Quat) -> Self {
+        let minor = |p: f32, q: f32, r: f32, s: f32| p * s - q * r;
+        let m = [
+            minor(a.w, a.x, b.w, b.x),
+            minor(a.w, a.y, b.w, b.y),
+            minor(a.w, a.z, b.w, b.z),
+            minor(a.x, a.y, b.x, b.y),
+            minor(a.x, a.z, b.x, b.z),
+            minor(a.y, a.z, b.y, b.z),
+        ];
+        let wedge = ((m[0] * m[0] + m[1] * m[1]) + (m[2] * m[2] + m[3] * m[3]))
+            + (m[4] * m[4] + m[5] * m[5]);
+        Self {
+            n2: a.norm_squared(),
+            on2: b.norm_squared(),
+            dot: a.dot(b),
+            wedge,
+        }
+    }
+
+    /// Whether the evaluation gives slerp's result for this pair, as far
+    /// as that is known before the angle: squared norms within
+    /// [`NORM_SQUARED_LIMIT`] and within 1e-6 of each other (relatively),
+    /// and a squared wedge large enough not to have lost precision to
+    /// underflow. Written to be false for NaN.
+    #[inline(always)]
+    pub(super) fn applies(&self) -> bool {
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        let near_unit = !((self.n2 - self.on2).abs() > NEARLY_UNIT * self.on2);
+        near_unit
+            & (self.n2 <= NORM_SQUARED_LIMIT)
+            & (self.on2 <= NORM_SQUARED_LIMIT)
+            & (self.wedge >= SQUARES_UNDERFLOW)
+    }
+
+    /// The notes' `phi` in [0, pi/2], the angle between `a` and `cn(b)`,
+    /// in f64. `sqrt` is the crate's square root or `sqrt_by_newton`
+    /// (they agree bit for bit).
+    ///
+    /// # Preconditions
+    ///
+    /// [`applies`](Self::applies) (or, in vectorized lanes, a squared
+    /// wedge put in its place that is positive).
+    #[inline(always)]
+    pub(super) fn angle(&self, sqrt: impl Fn(f32) -> f32) -> f64 {
+        atan2_of_root(f64::from(self.wedge), f64::from(self.dot.abs()), sqrt)
+    }
+
+    /// Slerp of `a` to `b` by `alpha` in (0, 1], for this pair's angle
+    /// `phi`: `sin((1 - alpha) phi) r a + sin(alpha phi) r cn(b)` with
+    /// `r = 1 / sin(phi)` from the wedge and the dot product. `alpha phi`
+    /// and `(1 - alpha) phi` are exact or within an f64 ulp, the sines and
+    /// `r` within a tenth of an f32 ulp; each coefficient is rounded to
+    /// f32 once.
+    ///
+    /// # Preconditions
+    ///
+    /// `phi > SMALL_ANGLE` for the result to be slerp's (then `r` is below
+    /// 2^13); those of [`angle`](Self::angle).
+    #[inline(always)]
+    pub(super) fn slerp(
+        &self,
+        a: Quat,
+        b: Quat,
+        phi: f64,
+        alpha: f32,
+        sqrt: impl Fn(f32) -> f32,
+    ) -> Quat {
+        let (w, x) = (f64::from(self.wedge), f64::from(self.dot));
+        let inverse_sine_squared = ((w + x * x) / w).min(INVERSE_SINE_SQUARED_LIMIT);
+        let r = f64::from(sqrt(inverse_sine_squared as f32));
+        let alpha = f64::from(alpha);
+        let c0 = sin_to_quarter_turn((1.0 - alpha) * phi) * r;
+        let c1 = sin_to_quarter_turn(alpha * phi) * r;
+        a.weighted_sum(c0 as f32, b, (c1 as f32).copysign(self.dot))
+    }
+}
+
+/// The angle above which a pair's evaluation is slerp's, in f64.
+pub(super) const SMALL_ANGLE_F64: f64 = SMALL_ANGLE as f64;
+
+impl Quat {
+    /// [`slerp`](Self::slerp) by the f64 evaluation, where it applies
+    /// (`alpha` in (0, 1], finite inputs within 2^16, norms within 1e-6 of
+    /// each other, more than 2^-12 rad apart); `None` elsewhere. The checks
+    /// are branches that ordinary inputs always pass, so the processor
+    /// predicts them and they cost no wait.
+    #[inline(always)]
+    pub(super) fn slerp_f64(self, other: Self, alpha: f32) -> Option<Self> {
+        if !(alpha > 0.0 && alpha <= 1.0) {
+            return None;
+        }
+        // Squared norms first: they make no NaN from infinities (the
+        // minors would: inf - inf).
+        let bounded =
+            self.norm_squared() <= NORM_SQUARED_LIMIT && other.norm_squared() <= NORM_SQUARED_LIMIT;
+        if !bounded {
+            return None;
+        }
+        let pair = Pair::of(self, other);
+        if !pair.applies() {
+            return None;
+        }
+        // Never NaN here: the pair applies.
+        let phi = pair.angle(crate::float::sqrt);
+        if phi <= SMALL_ANGLE_F64 {
+            return None;
+        }
+        Some(pair.slerp(self, other, phi, alpha, crate::float::sqrt))
+    }
+}
