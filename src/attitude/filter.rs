@@ -423,7 +423,8 @@ impl OrientationFilter {
             Some(acc) => self.correct_inclination(acc, factors),
             None => None,
         };
-        self.diagnostics.acc_ignored = drift.is_none();
+        let corrected = drift.is_some();
+        self.diagnostics.acc_ignored = !corrected;
         let drift = drift.unwrap_or(Cvec3::ZERO);
         self.diagnostics.acc_error = drift.norm();
         let heading = mag.map(|mag| self.correct_heading(mag, dt));
@@ -443,7 +444,6 @@ impl OrientationFilter {
                 (*average, *rate) = butterworth_step(*average, *rate, axis, factors);
             }
         }
-        let gated = acc.is_some_and(|a| (a.norm() - p.gravity).abs() <= p.acc_gate * p.gravity);
         // The corrections undid a drift of -drift in dt: in the sensor
         // frame, the bias error that would cause it. Faster corrections are
         // no bias (see max_bias).
@@ -456,7 +456,7 @@ impl OrientationFilter {
         let error = ex * rate.x + ey * rate.y;
         let seen = 0.5 * (ex.norm_squared() + ey.norm_squared());
         // While settling, the corrections are convergence, not bias.
-        if settled && !resting && gated && rate.norm() <= p.max_bias {
+        if settled && !resting && corrected && rate.norm() <= p.max_bias {
             // A continuous Kalman update: the gain is variance / noise^2
             // per second, and the variance shrinks by the same fraction.
             let variance = self.bias_variance;
