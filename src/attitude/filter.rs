@@ -60,7 +60,14 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///    correction, expressed in the sensor frame, is the drift a bias error
 ///    caused; the bias follows it as a scalar Kalman filter would, with the
 ///    time constant `bias_noise^2 / variance` (never shorter than
-///    `tau_bias`), when the sample passes the acceleration gate. The
+///    `tau_bias`), whenever an inclination correction was made. Every
+///    correction counts, however strongly the current sample is
+///    accelerated: the correction comes from the average, not from the
+///    sample, and the leaks of linear acceleration into the average
+///    cancel over the motion only if the corrections of all its phases
+///    are taken (picking the samples near gravity would pick particular
+///    phases of a periodic motion, whose leaks need not cancel;
+///    `bias_noise` is the weight that the leaks call for). The
 ///    correction is taken to the sensor frame by the attitude averaged
 ///    through the accelerometer's low-pass (its first two rows, the
 ///    earth's horizontal axes in the sensor frame), since the average it
@@ -100,8 +107,8 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
 /// LTO), counted by `cargo xtask filter-cost`, which fails above the
 /// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
-/// state: 1,580 (6D) and 2,086 (9D) with the default kernels, 1,586 and
-/// 2,047 with `fast-math`.
+/// state: 1,524 (6D) and 2,034 (9D) with the default kernels, 1,524 and
+/// 1,984 with `fast-math`.
 ///
 /// # Bad input
 ///
@@ -423,7 +430,8 @@ impl OrientationFilter {
             Some(acc) => self.correct_inclination(acc, factors),
             None => None,
         };
-        self.diagnostics.acc_ignored = drift.is_none();
+        let corrected = drift.is_some();
+        self.diagnostics.acc_ignored = !corrected;
         let drift = drift.unwrap_or(Cvec3::ZERO);
         self.diagnostics.acc_error = drift.norm();
         let heading = mag.map(|mag| self.correct_heading(mag, dt));
@@ -443,7 +451,6 @@ impl OrientationFilter {
                 (*average, *rate) = butterworth_step(*average, *rate, axis, factors);
             }
         }
-        let gated = acc.is_some_and(|a| (a.norm() - p.gravity).abs() <= p.acc_gate * p.gravity);
         // The corrections undid a drift of -drift in dt: in the sensor
         // frame, the bias error that would cause it. Faster corrections are
         // no bias (see max_bias).
@@ -456,7 +463,7 @@ impl OrientationFilter {
         let error = ex * rate.x + ey * rate.y;
         let seen = 0.5 * (ex.norm_squared() + ey.norm_squared());
         // While settling, the corrections are convergence, not bias.
-        if settled && !resting && gated && rate.norm() <= p.max_bias {
+        if settled && !resting && corrected && rate.norm() <= p.max_bias {
             // A continuous Kalman update: the gain is variance / noise^2
             // per second, and the variance shrinks by the same fraction.
             let variance = self.bias_variance;

@@ -79,15 +79,18 @@ pub struct FilterParams {
     /// (default 1.5 s).
     pub rest_time: f32,
     /// Acceleration-magnitude gate, a fraction of `gravity` (default 0.1):
-    /// the inclination is corrected only while the averaged specific force
-    /// is within it of `gravity`, and the bias learns from a correction only
-    /// while the current sample is within it too (a correction made during
-    /// strong linear acceleration says little about the gyro). The first
-    /// gate catches a sustained acceleration with a vertical part (a lift,
-    /// a climb); a sustained horizontal one (a car speeding up) changes the
-    /// magnitude only to second order: at 0.46 g sideways the averaged
-    /// vector is tilted 25° before it is 10 % longer than gravity. No
-    /// accelerometer-only filter can tell that from a tilt.
+    /// the inclination is corrected (and the bias learns from the
+    /// correction) only while the averaged specific force is within it of
+    /// `gravity`. The current sample is not gated: the correction comes
+    /// from the average, and a sample's magnitude says little about the
+    /// average's error (in a vertical circle at 1 g, the samples near
+    /// gravity all fall at two phases of each turn, where the average's
+    /// leak turns the same way). The gate catches a sustained acceleration
+    /// with a vertical part (a lift, a climb); a sustained horizontal one
+    /// (a car speeding up) changes the magnitude only to second order: at
+    /// 0.46 g sideways the averaged vector is tilted 25° before it is 10 %
+    /// longer than gravity. No accelerometer-only filter can tell that
+    /// from a tilt.
     pub acc_gate: f32,
     /// Magnetic disturbance gate, a fraction of the reference field
     /// (default 0.1): the heading is corrected only while the measured
