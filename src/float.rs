@@ -48,7 +48,7 @@ mod sqrt;
 mod sweep;
 
 pub(crate) use bits::SIGN;
-pub(crate) use norm::{scale_for_squares, ScaledSquares};
+pub(crate) use norm::{scale_for_squares, ScaledSquares, SQUARES_UNDERFLOW};
 pub(crate) use sin_cos::sin3;
 pub use sqrt::sqrt;
 #[cfg(all(
@@ -65,7 +65,6 @@ pub(crate) use sqrt::sqrt_by_newton;
 pub(crate) use {
     bits::select,
     double::{atan2_of_root, sin_to_quarter_turn},
-    norm::SQUARES_UNDERFLOW,
 };
 
 /// Four-quadrant arctangent of `y / x`, in [-pi, pi], with IEEE 754's
