@@ -120,6 +120,30 @@ impl Quat {
         if let Some(q) = self.slerp_f64(other, alpha) {
             return q;
         }
+        self.slerp_f32(other, alpha)
+    }
+
+    /// [`slerp`](Self::slerp) in f32, the whole of it on every target but
+    /// x86-64 and AArch64, where it takes what the f64 evaluation does not:
+    /// there it is not inlined, so that the inlined `slerp` is that
+    /// evaluation and one call (inlined whole, the rare cases' code left
+    /// `slerp` too large to be inlined into `RigTForm::interpolate` and
+    /// loops, which then paid for a call every time).
+    #[cfg_attr(
+        all(
+            any(target_arch = "x86_64", target_arch = "aarch64"),
+            not(feature = "fast-math")
+        ),
+        inline(never)
+    )]
+    #[cfg_attr(
+        not(all(
+            any(target_arch = "x86_64", target_arch = "aarch64"),
+            not(feature = "fast-math")
+        )),
+        inline(always)
+    )]
+    fn slerp_f32(self, other: Self, alpha: f32) -> Self {
         // The squared norms are sums of squares: NaN exactly for a NaN
         // component, infinite for an infinite one or where they overflow
         // (components beyond about 1e19, where the products below would
