@@ -69,7 +69,7 @@ pub(crate) fn atan2_of_root(w: f64, x: f64, sqrt: impl Fn(f32) -> f32) -> f64 {
     let c = ATAN;
     let low = (c[0] + z * c[1]) + z2 * (c[2] + z * c[3]);
     let high = (c[4] + z * c[5]) + z2 * (c[6] + z * c[7]);
-    let p = low + z4 * (high + z4 * c[8]);
+    let p = (low + z4 * high) + (z4 * z4) * c[8];
     let a = u + u * (z * p);
     // x^2 - w is negative exactly when the angle is above pi/4: then
     // pi/2 - a (a quarter turn and the sign of a flipped), else a.
