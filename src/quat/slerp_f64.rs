@@ -159,3 +159,105 @@ impl Quat {
         Some(pair.slerp(self, other, phi, alpha, crate::float::sqrt))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::float::sqrt;
+    use rand::{Rng, SeedableRng};
+
+    /// A random unit quaternion (normalized from a cube, away from its
+    /// centre).
+    fn unit(rng: &mut impl Rng) -> Quat {
+        loop {
+            let q = Quat::new(
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+            );
+            if q.norm_squared() > 0.01 {
+                return q.normalize();
+            }
+        }
+    }
+
+    /// Ordinary pairs, random unit quaternions with `alpha` in (0, 1], are
+    /// the f64 evaluation's, and `slerp` returns its result.
+    #[test]
+    fn takes_ordinary_pairs() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(12);
+        for _ in 0..10_000 {
+            let (a, b) = (unit(&mut rng), unit(&mut rng));
+            let alpha: f32 = rng.random_range(0.0..=1.0);
+            if alpha == 0.0 {
+                continue;
+            }
+            let q = a.slerp_f64(b, alpha).expect("an ordinary pair");
+            assert_eq!(q, a.slerp(b, alpha));
+        }
+    }
+
+    /// Inputs off unit norm are taken while their squared norms are within
+    /// 1e-6 of each other relative to the second's, whatever its size.
+    #[test]
+    fn takes_pairs_of_equal_norms_off_unit() {
+        let a = Quat::from_rotation_x(0.3).map(|c| c * 2.0);
+        let b = Quat::from_rotation_y(0.7).map(|c| c * 2.0);
+        assert!(a.slerp_f64(b, 0.5).is_some());
+        // |a|^2 is 4 (1 + 5e-7): 2e-6 above |b|^2, within 1e-6 of 4.
+        let a = a.map(|c| c * 1.000_000_25);
+        assert!((a.norm_squared() - b.norm_squared()).abs() < 4e-6);
+        assert!(a.slerp_f64(b, 0.5).is_some());
+        assert!(a.map(|c| c * 1.01).slerp_f64(b, 0.5).is_none());
+    }
+
+    /// What the evaluation leaves to the f32 one: `alpha` outside (0, 1],
+    /// norms more than 1e-6 apart, components beyond 2^16, non-finite
+    /// input, pairs 2^-12 rad apart or less (identical ones included).
+    #[test]
+    fn leaves_the_rare_inputs_to_the_f32_evaluation() {
+        let (a, b) = (Quat::from_rotation_x(0.3), Quat::from_rotation_y(0.7));
+        for alpha in [0.0, -0.25, 1.5, f32::NAN, f32::INFINITY] {
+            assert!(a.slerp_f64(b, alpha).is_none(), "alpha {alpha}");
+        }
+        let near = a * Quat::from_rotation_z(2.0 * SMALL_ANGLE * 0.9);
+        let huge = Quat::new(1e5, 0.0, 0.0, 0.0);
+        for (p, q) in [
+            (a, a),
+            (a, -a),
+            (a, near),
+            (a.map(|c| c * 1.01), b),
+            (huge, huge * Quat::from_rotation_x(1.0)),
+            (Quat::NAN, b),
+            (a, Quat::new(f32::INFINITY, 0.0, 0.0, 0.0)),
+        ] {
+            assert!(p.slerp_f64(q, 0.5).is_none(), "{p:?} {q:?}");
+        }
+        // Just past the small angles, taken.
+        let past = a * Quat::from_rotation_z(2.0 * SMALL_ANGLE * 1.1);
+        assert!(a.slerp_f64(past, 0.5).is_some());
+    }
+
+    /// The pair's angle is the angle between `a` and `cn(b)` (half the
+    /// rotation angle between them), against f64 arithmetic on the same
+    /// f32 inputs.
+    #[test]
+    fn angle_is_the_angle_between_the_pair() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(13);
+        for _ in 0..10_000 {
+            let (a, b) = (unit(&mut rng), unit(&mut rng));
+            let wide = |q: Quat| q.to_array().map(f64::from);
+            let (p, q) = (wide(a), wide(b));
+            let dot: f64 = p.iter().zip(&q).map(|(x, y)| x * y).sum();
+            let along: f64 = q
+                .iter()
+                .zip(&p)
+                .map(|(y, x)| (y - dot * x).powi(2))
+                .sum::<f64>();
+            let exact = along.sqrt().atan2(dot.abs());
+            let phi = Pair::of(a, b).angle(sqrt);
+            assert!((phi - exact).abs() <= 1e-6 * exact + 1e-7, "{phi} {exact}");
+        }
+    }
+}
