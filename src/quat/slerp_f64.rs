@@ -205,8 +205,9 @@ mod tests {
         let a = Quat::from_rotation_x(0.3).map(|c| c * 2.0);
         let b = Quat::from_rotation_y(0.7).map(|c| c * 2.0);
         assert!(a.slerp_f64(b, 0.5).is_some());
-        // |a|^2 is 4 (1 + 5e-7): 2e-6 above |b|^2, within 1e-6 of 4.
-        let a = a.map(|c| c * 1.000_000_25);
+        // Each component two ulps of 1 larger: |a|^2 is about 4 (1 + 4.8e-7),
+        // 1.9e-6 above |b|^2 and within 1e-6 of 4.
+        let a = a.map(|c| c * (1.0 + 2.0 * f32::EPSILON));
         assert!((a.norm_squared() - b.norm_squared()).abs() < 4e-6);
         assert!(a.slerp_f64(b, 0.5).is_some());
         assert!(a.map(|c| c * 1.01).slerp_f64(b, 0.5).is_none());
