@@ -12,7 +12,7 @@
 //! | `float/reduce.rs` | reduction by quarter turns for every finite f32 (Payne and Hanek, in integers), into a head and a tail | checked through the sine and cosine beyond 3 pi/4 ([`SIN_COS_MAX_ULP`](crate::accuracy::SIN_COS_MAX_ULP)) |
 //! | `float/sqrt.rs` | the FPU's `vsqrt.f32` on Arm hard-float targets, libm's `sqrtf` elsewhere; on 64-bit desktop targets also `sqrt_by_newton`, the same results in arithmetic a loop can vectorize | 0.5 ulp |
 //! | `float/norm.rs` | the overflow- and underflow-free sum of squares behind every `norm` and `normalize` | 2 ulp |
-//! | `float/double.rs` | on x86-64 and AArch64 only: slerp's angle (`atan2` of a root, a degree-16 odd polynomial on [0, 1]) and sines (on [0, pi/2], degree 7) in f64 | [`ANGLE_F64_MAX_REL_ERROR`](crate::accuracy::ANGLE_F64_MAX_REL_ERROR), [`SIN_F64_MAX_REL_ERROR`](crate::accuracy::SIN_F64_MAX_REL_ERROR) |
+//! | `float/double.rs` | on x86-64 and AArch64 only: slerp's angle (`atan2` of a root, a degree-17 odd polynomial on [0, 1]) and sines (on [0, pi/2], degree 9) in f64 | [`ANGLE_F64_MAX_REL_ERROR`](crate::accuracy::ANGLE_F64_MAX_REL_ERROR), [`SIN_F64_MAX_REL_ERROR`](crate::accuracy::SIN_F64_MAX_REL_ERROR) |
 //! | `float/fast_math.rs` | `fast-math`: micromath's atan2, sin, cos and tan, guarded | [`accuracy`](crate::accuracy) |
 //!
 //! The default kernels evaluate nothing in f64 but on 64-bit desktop

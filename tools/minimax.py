@@ -102,7 +102,7 @@ def atan_f64():
     # atan(u) = u + u^3 P(u^2) on 0 <= u <= 1, relative error.
     g = lambda s: (mp.atan(mp.sqrt(s)) - mp.sqrt(s)) / (s * mp.sqrt(s))
     w = lambda s: s * mp.sqrt(s) / mp.atan(mp.sqrt(s))
-    show_f64("atan on [0, 1], degree 8 in u^2", *remez(g, w, 8, TINY, mp.mpf(1)))
+    show_f64("atan on [0, 1], degree 7 in u^2", *remez(g, w, 7, TINY, mp.mpf(1)))
 
 
 def sin_f64():
