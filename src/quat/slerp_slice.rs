@@ -70,18 +70,12 @@ impl Quat {
     not(feature = "fast-math")
 ))]
 mod lanes {
-    use super::super::slerp_f64::{Pair, SMALL_ANGLE_F64};
+    use super::super::slerp_f64::{Pair, NORM_SQUARED_LIMIT, SMALL_ANGLE_F64};
     use super::Quat;
     use crate::float::{select, sqrt_by_newton};
 
     /// Pairs per block: the flags of a block live on the stack.
     const BLOCK: usize = 64;
-
-    /// 2^16, the largest magnitude of a component the lanes take (that of
-    /// the f64 evaluation, whose squared norms are at most 2^32): larger
-    /// ones, NaN and infinities are replaced before any arithmetic, so that
-    /// no operation makes an infinity, and none a NaN.
-    const LANE_LIMIT: f32 = 65_536.0;
 
     /// [`Quat::slerp_slice`] for `alpha` in (0, 1].
     pub(super) fn slerp_in_blocks(starts: &[Quat], ends: &[Quat], alpha: f32, out: &mut [Quat]) {
@@ -110,13 +104,12 @@ mod lanes {
     /// quaternion, to be replaced).
     #[inline(always)]
     fn in_plane(a: Quat, b: Quat, alpha: f32) -> (Quat, bool) {
-        let within = |q: Quat| {
-            (q.w.abs() <= LANE_LIMIT)
-                & (q.x.abs() <= LANE_LIMIT)
-                & (q.y.abs() <= LANE_LIMIT)
-                & (q.z.abs() <= LANE_LIMIT)
-        };
-        let bounded = within(a) & within(b);
+        // The check `slerp_f64` makes first, on the squared norms (which
+        // make no NaN from infinities): inputs beyond it, NaN among them,
+        // are replaced before any other arithmetic, so that no operation
+        // makes an infinity, and none a NaN.
+        let bounded =
+            (a.norm_squared() <= NORM_SQUARED_LIMIT) & (b.norm_squared() <= NORM_SQUARED_LIMIT);
         let a = a.map(|c| select(bounded, c, 1.0));
         let b = b.map(|c| select(bounded, c, 1.0));
         let mut pair = Pair::of(a, b);
