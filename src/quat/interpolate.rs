@@ -326,7 +326,8 @@ impl Quat {
         let lerp = self.weighted_sum(1.0 - alpha, other, toward);
         // Divided by its norm where the sum of squares needs no rescaling
         // (every unit pair but extreme extrapolation); `normalize` does the
-        // rest.
+        // rest. Through `normalize` (its sum in sequence, its two range
+        // checks) every call would take about a quarter longer on x86-64.
         let sum = pairwise(lerp, lerp);
         if (SQUARES_UNDERFLOW..=f32::MAX).contains(&sum) {
             let n = float::sqrt(sum);
