@@ -126,9 +126,10 @@ impl Quat {
     /// [`slerp`](Self::slerp) in f32, the whole of it on every target but
     /// x86-64 and AArch64, where it takes what the f64 evaluation does not:
     /// there it is not inlined, so that the inlined `slerp` is that
-    /// evaluation and one call (inlined whole, the rare cases' code left
-    /// `slerp` too large to be inlined into `RigTForm::interpolate` and
-    /// loops, which then paid for a call every time).
+    /// evaluation and one call (with the rare cases' code inlined too,
+    /// `slerp` is too large for the compiler to inline into
+    /// `RigTForm::interpolate` and callers' loops, which then pay for a
+    /// call every time).
     #[cfg_attr(
         all(
             any(target_arch = "x86_64", target_arch = "aarch64"),
