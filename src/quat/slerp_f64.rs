@@ -165,22 +165,32 @@ impl Quat {
 mod tests {
     use super::*;
     use crate::float::sqrt;
-    use rigtform_testkit::{rotation_angle64, to_f64, Draws};
+    use rand::{Rng, SeedableRng};
 
-    /// A random unit quaternion from the test kit's seeded draws (whose
-    /// `Quat` is the crate's as a dependency: the same four components).
-    fn unit(draws: &mut Draws) -> Quat {
-        Quat::from_array(draws.unit_quat().to_array())
+    /// A random unit quaternion (normalized from a cube, away from its
+    /// centre).
+    fn unit(rng: &mut impl Rng) -> Quat {
+        loop {
+            let q = Quat::new(
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+                rng.random_range(-1.0..1.0),
+            );
+            if q.norm_squared() > 0.01 {
+                return q.normalize();
+            }
+        }
     }
 
     /// Ordinary pairs, random unit quaternions with `alpha` in (0, 1], are
     /// the f64 evaluation's, and `slerp` returns its result.
     #[test]
     fn takes_ordinary_pairs() {
-        let mut draws = Draws::new(12);
+        let mut rng = rand::rngs::StdRng::seed_from_u64(12);
         for _ in 0..10_000 {
-            let (a, b) = (unit(&mut draws), unit(&mut draws));
-            let alpha = draws.uniform(0.0, 1.0) as f32;
+            let (a, b) = (unit(&mut rng), unit(&mut rng));
+            let alpha: f32 = rng.random_range(0.0..=1.0);
             if alpha == 0.0 {
                 continue;
             }
@@ -231,19 +241,23 @@ mod tests {
         assert!(a.slerp_f64(past, 0.5).is_some());
     }
 
-    /// The pair's angle is the angle between `a` and `cn(b)`: half the
-    /// rotation angle between them, against the test kit's f64 reference on
-    /// the same f32 inputs.
+    /// The pair's angle is the angle between `a` and `cn(b)` (half the
+    /// rotation angle between them), against f64 arithmetic on the same
+    /// f32 inputs.
     #[test]
     fn angle_is_the_angle_between_the_pair() {
-        let mut draws = Draws::new(13);
+        let mut rng = rand::rngs::StdRng::seed_from_u64(13);
         for _ in 0..10_000 {
-            let (p, q) = (draws.unit_quat(), draws.unit_quat());
-            let (a, b) = (
-                Quat::from_array(p.to_array()),
-                Quat::from_array(q.to_array()),
-            );
-            let exact = rotation_angle64(to_f64(p), to_f64(q)) / 2.0;
+            let (a, b) = (unit(&mut rng), unit(&mut rng));
+            let wide = |q: Quat| q.to_array().map(f64::from);
+            let (p, q) = (wide(a), wide(b));
+            let dot: f64 = p.iter().zip(&q).map(|(x, y)| x * y).sum();
+            let along: f64 = q
+                .iter()
+                .zip(&p)
+                .map(|(y, x)| (y - dot * x).powi(2))
+                .sum::<f64>();
+            let exact = along.sqrt().atan2(dot.abs());
             let phi = Pair::of(a, b).angle(sqrt);
             assert!((phi - exact).abs() <= 1e-6 * exact + 1e-7, "{phi} {exact}");
         }
