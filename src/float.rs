@@ -48,7 +48,7 @@ mod sqrt;
 mod sweep;
 
 pub(crate) use bits::SIGN;
-pub(crate) use norm::{scale_for_squares, ScaledSquares, SQUARES_UNDERFLOW};
+pub(crate) use norm::{needs_no_rescaling, scale_for_squares, ScaledSquares, SQUARES_UNDERFLOW};
 pub(crate) use sin_cos::sin3;
 pub use sqrt::sqrt;
 #[cfg(all(

@@ -9,6 +9,17 @@ use super::sqrt::sqrt;
 /// error, so above this threshold the relative error it causes is at most
 /// 2^-50, far below one ulp (2^-24).
 pub(crate) const SQUARES_UNDERFLOW: f32 = f32::from_bits((127 - 100) << 23);
+/// Whether a sum of squares lies in [`SQUARES_UNDERFLOW`], `f32::MAX`], where
+/// it needs no rescaling: one unsigned comparison of the bits. For
+/// non-negative floats the order of the bits is the order of the values;
+/// NaN (either sign), infinity and negative numbers, -0 among them, have
+/// bits outside the range and give `false`.
+#[inline]
+#[must_use]
+pub(crate) fn needs_no_rescaling(sum: f32) -> bool {
+    const LOW: u32 = SQUARES_UNDERFLOW.to_bits();
+    sum.to_bits().wrapping_sub(LOW) <= f32::MAX.to_bits() - LOW
+}
 /// 2^100, exact scale for small inputs: when the sum of squares is below
 /// 2^-100, every component is below 2^-50 and becomes less than 2^50, while
 /// the smallest subnormal (2^-149) becomes 2^-49, whose square is normal.
@@ -67,7 +78,7 @@ impl ScaledSquares {
 pub(crate) fn scale_for_squares(v: [f32; 4]) -> ScaledSquares {
     let sum = sum_of_squares(v);
     // NaN is in no range: it is returned as it is, with the sum NaN.
-    if (SQUARES_UNDERFLOW..=f32::MAX).contains(&sum) || sum.is_nan() {
+    if needs_no_rescaling(sum) || sum.is_nan() {
         return ScaledSquares { v, scale: 1.0, sum };
     }
     // The sum overflowed (some component is at least 2^63, or infinite) or may
@@ -126,6 +137,35 @@ mod tests {
             let got = scale_for_squares(v).norm();
             // Subnormal results have coarser ulps; compare relative to f32 ulps of the exact norm.
             assert!(ulps(got, exact) <= 2.0, "{v:?}: {got} vs {exact}");
+        }
+    }
+
+    #[test]
+    fn needs_no_rescaling_is_the_range_from_the_underflow_threshold_to_max() {
+        let inside = [
+            SQUARES_UNDERFLOW,
+            1.0,
+            f32::MAX,
+            f32::from_bits(SQUARES_UNDERFLOW.to_bits() + 1),
+        ];
+        for sum in inside {
+            assert!(needs_no_rescaling(sum), "{sum:e}");
+        }
+        let outside = [
+            f32::from_bits(SQUARES_UNDERFLOW.to_bits() - 1),
+            0.0,
+            -0.0,
+            f32::MIN_POSITIVE,
+            1e-45,
+            -1.0,
+            -f32::MAX,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            -f32::NAN,
+        ];
+        for sum in outside {
+            assert!(!needs_no_rescaling(sum), "{sum:e}");
         }
     }
 

@@ -3,7 +3,7 @@
 //! notes' "4D lerp and renormalization").
 
 use super::Quat;
-use crate::float::{self, scale_for_squares, ScaledSquares, SQUARES_UNDERFLOW};
+use crate::float::{self, scale_for_squares, ScaledSquares};
 
 /// 2^-21 (four ulps of 1): the cosine between a unit direction and the
 /// quaternion it must be orthogonal to, below which slerp's extrapolation
@@ -317,20 +317,23 @@ impl Quat {
     #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
     #[must_use]
     pub fn nlerp(self, other: Self, alpha: f32) -> Self {
-        // The sign goes on alpha (`alpha (-other)` is `(-alpha) other`
-        // exactly), as a factor of +-1 with the dot product's sign: no
-        // branch for random pairs to mispredict, no wait for a comparison.
+        // The sign goes on `other`, as an exclusive or of its sign bits
+        // with the dot product's (`alpha (-other)` is `-(alpha other)`
+        // exactly): no branch for random pairs to mispredict, and no
+        // multiplication on the way from the dot product to the lerp.
         // Sums in pairs (the dot product's and the squares'): shorter
         // chains, and a vector unit adds two halves at once.
         let pairwise = |a: Self, b: Self| (a.w * b.w + a.y * b.y) + (a.x * b.x + a.z * b.z);
-        let toward = alpha * 1.0f32.copysign(pairwise(self, other));
-        let lerp = self.weighted_sum(1.0 - alpha, other, toward);
+        let sign = pairwise(self, other).to_bits() & float::SIGN;
+        let other = other.map(|c| f32::from_bits(c.to_bits() ^ sign));
+        let lerp = self.weighted_sum(1.0 - alpha, other, alpha);
         // Divided by its norm where the sum of squares needs no rescaling
-        // (every unit pair but extreme extrapolation); `normalize` does the
-        // rest. Through `normalize` (its sum in sequence, its two range
-        // checks) every call would take about a quarter longer on x86-64.
+        // (every unit pair but extreme extrapolation), checked by one
+        // comparison; `normalize` does the rest. Through `normalize` (its
+        // sum in sequence, its two range checks) every call would take
+        // about a quarter longer on x86-64.
         let sum = pairwise(lerp, lerp);
-        if (SQUARES_UNDERFLOW..=f32::MAX).contains(&sum) {
+        if float::needs_no_rescaling(sum) {
             let n = float::sqrt(sum);
             return lerp.map(|c| c / n);
         }
