@@ -48,7 +48,12 @@ mod sqrt;
 mod sweep;
 
 pub(crate) use bits::SIGN;
-pub(crate) use norm::{needs_no_rescaling, scale_for_squares, ScaledSquares, SQUARES_UNDERFLOW};
+#[cfg(all(
+    any(target_arch = "x86_64", target_arch = "aarch64"),
+    not(feature = "fast-math")
+))]
+pub(crate) use norm::SQUARES_UNDERFLOW;
+pub(crate) use norm::{needs_no_rescaling, scale_for_squares, ScaledSquares};
 pub(crate) use sin_cos::sin3;
 pub use sqrt::sqrt;
 #[cfg(all(
