@@ -10,7 +10,7 @@
 //! | `float/atan2.rs` | [`atan2_kernel`](atan2::atan2_kernel): one division onto [-tan(1/2), tan(1/2)] and a degree-13 odd minimax polynomial | [`ATAN2_MAX_ULP`](crate::accuracy::ATAN2_MAX_ULP) |
 //! | `float/sin_cos.rs` | [`sin_cos_kernel`](sin_cos::sin_cos_kernel): a degree-7 and a degree-8 minimax polynomial on [-pi/4, pi/4], one subtraction up to 3 pi/4 | [`SIN_COS_NARROW_MAX_ULP`](crate::accuracy::SIN_COS_NARROW_MAX_ULP), [`SIN_COS_MAX_ULP`](crate::accuracy::SIN_COS_MAX_ULP) beyond |
 //! | `float/reduce.rs` | reduction by quarter turns for every finite f32 (Payne and Hanek, in integers), into a head and a tail | checked through the sine and cosine beyond 3 pi/4 ([`SIN_COS_MAX_ULP`](crate::accuracy::SIN_COS_MAX_ULP)) |
-//! | `float/sqrt.rs` | the FPU's `vsqrt.f32` on Arm hard-float targets, libm's `sqrtf` elsewhere; on 64-bit desktop targets also `sqrt_by_newton`, the same results in arithmetic a loop can vectorize | 0.5 ulp |
+//! | `float/sqrt.rs` | the processor's square root instruction (Arm hard-float `vsqrt.f32`, x86-64 `sqrtss`, AArch64 `fsqrt`, the last two in a form a loop can vectorize), libm's `sqrtf` elsewhere | 0.5 ulp |
 //! | `float/norm.rs` | the overflow- and underflow-free sum of squares behind every `norm` and `normalize` | 2 ulp |
 //! | `float/double.rs` | on x86-64 and AArch64 only: slerp's angle (`atan2` of a root, a degree-17 odd polynomial on [0, 1]) and sines (on [0, pi/2], degree 9) in f64 | [`ANGLE_F64_MAX_REL_ERROR`](crate::accuracy::ANGLE_F64_MAX_REL_ERROR), [`SIN_F64_MAX_REL_ERROR`](crate::accuracy::SIN_F64_MAX_REL_ERROR) |
 //! | `float/fast_math.rs` | `fast-math`: micromath's atan2, sin, cos and tan, guarded | [`accuracy`](crate::accuracy) |
@@ -56,11 +56,6 @@ pub(crate) use norm::SQUARES_UNDERFLOW;
 pub(crate) use norm::{needs_no_rescaling, scale_for_squares, ScaledSquares};
 pub(crate) use sin_cos::sin3;
 pub use sqrt::sqrt;
-#[cfg(all(
-    any(target_arch = "x86_64", target_arch = "aarch64"),
-    not(feature = "fast-math")
-))]
-pub(crate) use sqrt::sqrt_by_newton;
 /// What the vectorizable lanes of `Quat::slerp_slice` share with the single
 /// call.
 #[cfg(all(

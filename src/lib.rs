@@ -1,7 +1,8 @@
 //! `rigtform`: f32 rotation quaternions and rigid body transforms for
 //! microcontroller IMU firmware and for renderers. `#![no_std]`, no heap, no
 //! panics, one required dependency (`libm`), and no `unsafe` code but
-//! for the FPU's square root instruction on Arm hard-float targets.
+//! for the processor's square root instruction (on Arm hard-float targets,
+//! x86-64 and AArch64).
 //!
 //! It implements the quaternion lecture notes of CS175 (Gortler,
 //! *Foundations of 3D Computer Graphics*, chapters 7 and 8): [`Quat`] with
@@ -86,17 +87,30 @@
 #![cfg_attr(not(test), no_std)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 #![deny(missing_docs)]
-// No unsafe code, except the one `vsqrt.f32` instruction of
-// `fpu_sqrt` (src/float/sqrt.rs) on Arm hard-float targets, where the lint is `deny` and
-// that one function allows it. With the `bytemuck` feature, bytemuck's derive macros
-// write `unsafe impl Pod` and `Zeroable` for the plain-f32 types after checking them
-// (`repr(C)`, no padding, `Pod` fields); the lint does not fire on that generated code
+// No unsafe code, except the square root instruction in src/float/sqrt.rs:
+// `vsqrt.f32` (`fpu_sqrt`) on Arm hard-float targets, `sqrtss` and `fsqrt`
+// (`vector_unit_sqrt`) on x86-64 with SSE and AArch64 with NEON. There the
+// lint is `deny` and that one function allows it; elsewhere it is `forbid`.
+// With the `bytemuck` feature, bytemuck's derive macros write `unsafe impl
+// Pod` and `Zeroable` for the plain-f32 types after checking them (`repr(C)`,
+// no padding, `Pod` fields); the lint does not fire on that generated code
 // (src/features/impl_bytemuck.rs).
 #![cfg_attr(
-    not(all(target_arch = "arm", target_abi = "eabihf")),
+    not(any(
+        all(target_arch = "arm", target_abi = "eabihf"),
+        all(target_arch = "x86_64", target_feature = "sse"),
+        all(target_arch = "aarch64", target_feature = "neon")
+    )),
     forbid(unsafe_code)
 )]
-#![cfg_attr(all(target_arch = "arm", target_abi = "eabihf"), deny(unsafe_code))]
+#![cfg_attr(
+    any(
+        all(target_arch = "arm", target_abi = "eabihf"),
+        all(target_arch = "x86_64", target_feature = "sse"),
+        all(target_arch = "aarch64", target_feature = "neon")
+    ),
+    deny(unsafe_code)
+)]
 
 pub mod accuracy;
 pub mod attitude;

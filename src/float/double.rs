@@ -5,6 +5,8 @@
 //! f32 ulp. Never compiled for the microcontrollers, whose FPUs have no
 //! f64 (the f32 kernels serve them).
 
+use super::sqrt::sqrt;
+
 /// Minimax coefficients of `(atan(u) - u) / u^3` as a polynomial in `u^2`
 /// on [0, 1], for relative error (`tools/minimax.py atan_f64`): the
 /// approximation error is 1.7e-8 of the result.
@@ -40,9 +42,8 @@ const SIGN: u64 = 0x8000_0000_0000_0000;
 /// [0, 1], the angle is `atan(sqrt(z))`, or `pi/2` less it when `w` is the
 /// larger; `atan(u) = u + u^3 P(u^2)` with the degree-7 polynomial
 /// [`ATAN`], evaluated by Estrin's scheme (a shorter chain of dependent
-/// operations than Horner's) while `sqrt(z)` is taken in f32 by `sqrt`
-/// (the crate's `sqrt`, or `sqrt_by_newton` in vectorized loops: the two
-/// agree bit for bit). The quarter turn and the sign are applied by
+/// operations than Horner's) while `sqrt(z)` is taken in f32 by the
+/// crate's [`sqrt`]. The quarter turn and the sign are applied by
 /// arithmetic on the sign of `x^2 - w`, not by a select, which compilers
 /// turn into a branch that random inputs mispredict.
 ///
@@ -59,7 +60,7 @@ const SIGN: u64 = 0x8000_0000_0000_0000;
 /// the polynomial's 1.7e-8 and the f64 rounding.
 #[inline(always)]
 #[must_use]
-pub(crate) fn atan2_of_root(w: f64, x: f64, sqrt: impl Fn(f32) -> f32) -> f64 {
+pub(crate) fn atan2_of_root(w: f64, x: f64) -> f64 {
     let x2 = x * x;
     // Comparisons rather than `min` and `max`, whose NaN rules cost
     // instructions (neither is NaN here).
@@ -102,7 +103,6 @@ mod tests {
     use super::*;
     use crate::accuracy::{ANGLE_F64_MAX_REL_ERROR, SIN_F64_MAX_REL_ERROR};
     use crate::float::sweep::{floats, SAMPLE_STEP};
-    use crate::float::{sqrt, sqrt_by_newton};
     use core::f32::consts::FRAC_PI_2;
 
     /// The largest relative error of [`sin_to_quarter_turn`] over every
@@ -128,7 +128,7 @@ mod tests {
         for t in floats(9.3e-10, 1.0, step) {
             for (w, x) in [(f64::from(t), 1.0), (1.0, f64::from(t))] {
                 let exact = w.sqrt().atan2(x);
-                let err = ((atan2_of_root(w, x, sqrt) - exact) / exact).abs();
+                let err = ((atan2_of_root(w, x) - exact) / exact).abs();
                 if err > worst.0 {
                     worst = (err, t);
                 }
@@ -162,23 +162,17 @@ mod tests {
     }
 
     /// The edges of the angle's range: 0, pi/4 and pi/2 exactly where the
-    /// inputs say so, and the same bits with either square root.
+    /// inputs say so.
     #[test]
-    fn angle_meets_its_edges_and_either_square_root() {
-        assert_eq!(atan2_of_root(1.0, 0.0, sqrt), core::f64::consts::FRAC_PI_2);
-        let tiny = atan2_of_root(1e-30, 1.0, sqrt);
+    fn angle_meets_its_edges() {
+        assert_eq!(atan2_of_root(1.0, 0.0), core::f64::consts::FRAC_PI_2);
+        let tiny = atan2_of_root(1e-30, 1.0);
         assert!((tiny / 1e-15 - 1.0).abs() < 1e-7, "{tiny:e}");
-        let quarter = atan2_of_root(1.0, 1.0, sqrt);
+        let quarter = atan2_of_root(1.0, 1.0);
         let quarter_error = (quarter / core::f64::consts::FRAC_PI_4 - 1.0).abs();
         assert!(
             quarter_error <= f64::from(ANGLE_F64_MAX_REL_ERROR),
             "{quarter}"
         );
-        for (w, x) in [(0.3, 0.9), (2.0, 0.1), (1e-20, 3.0), (5.0, 5.0)] {
-            assert_eq!(
-                atan2_of_root(w, x, sqrt).to_bits(),
-                atan2_of_root(w, x, sqrt_by_newton).to_bits()
-            );
-        }
     }
 }

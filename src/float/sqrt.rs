@@ -1,19 +1,22 @@
-//! The square root: the FPU's `vsqrt.f32` on Arm hard-float targets, libm's
-//! `sqrtf` elsewhere. Correctly rounded (0.5 ulp) either way. Beside them,
-//! [`sqrt_by_newton`], the same results in arithmetic that a loop can
-//! vectorize.
-
-#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-use super::bits::select;
+//! The square root: one instruction of the processor where it has one
+//! (`vsqrt.f32` on Arm hard-float targets, `sqrtss` on x86-64, `fsqrt` on
+//! AArch64), libm's `sqrtf` elsewhere. Correctly rounded (0.5 ulp) either
+//! way.
 
 /// Square root, correctly rounded (0.5 ulp), with both backends.
 ///
-/// On Arm hard-float targets (`thumbv7em-none-eabihf` and every other
-/// `eabihf` target: the hard-float ABI implies a VFP unit, and every VFP has
-/// `vsqrt.f32`) this is that one FPU instruction, through [`fpu_sqrt`]:
-/// libm's `sqrtf` is a bit-by-bit software loop there (about 50
-/// instructions). Elsewhere it is libm's `sqrtf`, which uses the hardware
-/// instruction where libm knows one (`sqrtss` on x86-64).
+/// - On Arm hard-float targets (`thumbv7em-none-eabihf` and every other
+///   `eabihf` target: the hard-float ABI implies a VFP unit, and every VFP
+///   has `vsqrt.f32`) this is that one FPU instruction, through
+///   [`fpu_sqrt`]: libm's `sqrtf` is a bit-by-bit software loop there
+///   (about 50 instructions).
+/// - On x86-64 with SSE and AArch64 with NEON (every hosted target of
+///   either) it is the vector unit's square root, through `core::arch`'s
+///   intrinsic, which the compiler sees as a square root: a loop that calls
+///   it vectorizes (`sqrtps`, `fsqrt v.4s`), as `Quat::slerp_slice`'s does.
+///   libm's `sqrtf` is the same instruction there, but in inline assembly,
+///   which a loop vectorizer cannot look into.
+/// - Elsewhere it is libm's `sqrtf`.
 ///
 /// `fast-math` keeps it on purpose: micromath's `sqrt` is a single
 /// bit-level estimate with a relative error of up to 6.1 % (6.066e-2 over
@@ -24,65 +27,61 @@ use super::bits::select;
 pub fn sqrt(x: f32) -> f32 {
     #[cfg(all(target_arch = "arm", target_abi = "eabihf"))]
     return fpu_sqrt(x);
-    #[cfg(not(all(target_arch = "arm", target_abi = "eabihf")))]
+    #[cfg(any(
+        all(target_arch = "x86_64", target_feature = "sse"),
+        all(target_arch = "aarch64", target_feature = "neon")
+    ))]
+    return vector_unit_sqrt(x);
+    #[cfg(not(any(
+        all(target_arch = "arm", target_abi = "eabihf"),
+        all(target_arch = "x86_64", target_feature = "sse"),
+        all(target_arch = "aarch64", target_feature = "neon")
+    )))]
     return libm::sqrtf(x);
 }
 
-/// Square root of `0 <= x <= f32::MAX`, correctly rounded (so equal to
-/// [`sqrt`], bit for bit), in plain arithmetic: no square root instruction
-/// and no inline assembly, so that the compiler can vectorize a loop that
-/// calls it (libm's `sqrtf` on x86-64 is inline assembly, which a loop
-/// vectorizer cannot look into, and `core` has no stable square root).
-/// Used by [`Quat::slerp_slice`](crate::Quat::slerp_slice) on 64-bit
-/// desktop targets; it costs more than one `sqrtss` per call.
+/// `sqrtss`, the correctly rounded square root of SSE, through
+/// `core::arch`'s intrinsics: one of the crate's three `unsafe` blocks.
 ///
-/// In f64 (where `x` is exact): the inverse square root from the well-known
-/// bit-level estimate (a magic constant less half the bits; relative error
-/// below 3.5 %), three Newton steps (below 4e-11),
-/// times `x`, rounded to f32: within an ulp of the correctly rounded root.
-/// Then the neighbour whose midpoint with it lies on the other side of
-/// `sqrt(x)` replaces it: the midpoint of two adjacent f32 has 25
-/// significant bits, so its square is exact in f64 and the comparison with
-/// `x` is exact (and never equal: such a square has more significant bits
-/// than an f32).
-///
-/// # Preconditions
-///
-/// `x` is finite and not negative (+0 and subnormals included); for other
-/// input the result is unspecified (but never a panic).
-///
-/// # Accuracy
-///
-/// Correctly rounded: `sqrt_by_newton_equals_sqrt_on_a_sample` compares it
-/// with [`sqrt`] bit for bit on every 997th f32, and the ignored
-/// `sqrt_by_newton_exhaustive_kernel_sweep` on every f32 of [0, f32::MAX].
-#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-// With fast-math, slerp_slice is a loop of slerp and this goes unused
-// (its tests still check it).
-#[cfg_attr(feature = "fast-math", allow(dead_code))]
+/// The intrinsics are `#[target_feature]` functions, `unsafe` to call
+/// from a function that does not enable the feature itself.
+#[cfg(all(target_arch = "x86_64", target_feature = "sse"))]
+#[allow(unsafe_code)]
 #[inline(always)]
-#[must_use]
-pub(crate) fn sqrt_by_newton(x: f32) -> f32 {
-    let y = f64::from(x);
-    let mut r = f64::from_bits(0x5fe6_eb50_c7b5_37a9_u64.wrapping_sub(y.to_bits() >> 1));
-    let half_y = 0.5 * y;
-    for _ in 0..3 {
-        r *= 1.5 - half_y * r * r;
-    }
-    let c = (y * r) as f32;
-    // c is at most f32::MAX's root, far below infinity: its successor's
-    // bits do not wrap. Below 0 there is nothing: 0 stays its own lower
-    // neighbour.
-    let up = f32::from_bits(c.to_bits().wrapping_add(1));
-    let down = f32::from_bits(c.to_bits().saturating_sub(1));
-    let mid_up = (f64::from(c) + f64::from(up)) * 0.5;
-    let mid_down = (f64::from(c) + f64::from(down)) * 0.5;
-    let c = select(y > mid_up * mid_up, up, c);
-    select(y < mid_down * mid_down, down, c)
+fn vector_unit_sqrt(x: f32) -> f32 {
+    use core::arch::x86_64::{_mm_cvtss_f32, _mm_set_ss, _mm_sqrt_ss};
+    // SAFETY: the three intrinsics need SSE, which this function is
+    // compiled only with (`target_feature = "sse"`, enabled on every
+    // x86-64 target but the soft-float kernel ones). They read and write
+    // no memory; `sqrtss` answers NaN for negative or NaN input, as
+    // IEEE 754 says, and cannot fault with the default MXCSR (exceptions
+    // masked).
+    unsafe { _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x))) }
 }
 
-/// `vsqrt.f32`, the correctly rounded square root of the Arm FPU: the one
-/// `unsafe` block of the crate.
+/// `fsqrt`, the correctly rounded square root of AArch64's SIMD and
+/// floating-point unit, through `core::arch`'s NEON intrinsics on lane 0 of
+/// a two-lane vector (the compiler reduces it to the scalar `fsqrt s`): one
+/// of the crate's three `unsafe` blocks.
+///
+/// The intrinsics are `#[target_feature]` functions, `unsafe` to call
+/// from a function that does not enable the feature itself.
+#[cfg(all(target_arch = "aarch64", target_feature = "neon"))]
+#[allow(unsafe_code)]
+#[inline(always)]
+fn vector_unit_sqrt(x: f32) -> f32 {
+    use core::arch::aarch64::{vdup_n_f32, vget_lane_f32, vsqrt_f32};
+    // SAFETY: the three intrinsics need NEON, which this function is
+    // compiled only with (`target_feature = "neon"`, enabled on every
+    // AArch64 target but the soft-float ones). They read and write no
+    // memory, and `fsqrt` answers NaN for negative or NaN input, as
+    // IEEE 754 says, without trapping (floating-point traps are disabled
+    // by default).
+    unsafe { vget_lane_f32::<0>(vsqrt_f32(vdup_n_f32(x))) }
+}
+
+/// `vsqrt.f32`, the correctly rounded square root of the Arm FPU: one of
+/// the crate's three `unsafe` blocks.
 ///
 /// Stable Rust has no safe way to reach it in `no_std` code: `f32::sqrt` is
 /// in `std` only (its `core` version is unstable), libm has no Arm FPU path,
@@ -121,36 +120,6 @@ mod tests {
     use super::*;
     use crate::accuracy;
     use crate::float::sweep::{spread, ulps};
-
-    /// `sqrt_by_newton` and `sqrt`, bit for bit, on every `step`-th f32 of
-    /// [0, f32::MAX].
-    #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-    fn sqrt_by_newton_sweep(step: usize) {
-        let top = f32::MAX.to_bits();
-        for bits in (0..=top).step_by(step).chain([top, 1, 0x0080_0000]) {
-            let x = f32::from_bits(bits);
-            assert_eq!(
-                sqrt_by_newton(x).to_bits(),
-                sqrt(x).to_bits(),
-                "sqrt_by_newton({x:e})"
-            );
-        }
-    }
-
-    #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-    #[test]
-    fn sqrt_by_newton_equals_sqrt_on_a_sample() {
-        sqrt_by_newton_sweep(997);
-    }
-
-    /// Every f32 of [0, f32::MAX]:
-    /// `cargo test --release --lib -- --ignored exhaustive_kernel_sweep`.
-    #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-    #[test]
-    #[ignore = "seconds in release, minutes in debug: run by hand after changing it"]
-    fn sqrt_by_newton_exhaustive_kernel_sweep() {
-        sqrt_by_newton_sweep(1);
-    }
 
     #[test]
     fn sweep_sqrt() {

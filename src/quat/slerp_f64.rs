@@ -14,7 +14,7 @@
 
 use super::interpolate::{NEARLY_UNIT, SMALL_ANGLE};
 use super::Quat;
-use crate::float::{atan2_of_root, sin_to_quarter_turn, SQUARES_UNDERFLOW};
+use crate::float::{atan2_of_root, sin_to_quarter_turn, sqrt, SQUARES_UNDERFLOW};
 
 /// 2^32, the largest squared norm the evaluation takes: components below
 /// 2^16, whose products and sums of squares stay far from overflow (at
@@ -84,16 +84,15 @@ impl Pair {
     }
 
     /// The notes' `phi` in [0, pi/2], the angle between `a` and `cn(b)`,
-    /// in f64. `sqrt` is the crate's square root or `sqrt_by_newton`
-    /// (they agree bit for bit).
+    /// in f64.
     ///
     /// # Preconditions
     ///
     /// [`applies`](Self::applies) (or, in vectorized lanes, a squared
     /// wedge put in its place that is positive).
     #[inline(always)]
-    pub(super) fn angle(&self, sqrt: impl Fn(f32) -> f32) -> f64 {
-        atan2_of_root(f64::from(self.wedge), f64::from(self.dot.abs()), sqrt)
+    pub(super) fn angle(&self) -> f64 {
+        atan2_of_root(f64::from(self.wedge), f64::from(self.dot.abs()))
     }
 
     /// Slerp of `a` to `b` by `alpha` in (0, 1], for this pair's angle
@@ -101,7 +100,7 @@ impl Pair {
     /// `r = 1 / sin(phi)` from the wedge and the dot product. `alpha phi`
     /// and `(1 - alpha) phi` are exact or within an f64 ulp, the sines
     /// within a tenth of an f32 ulp, `r` within 0.75 of one (its square
-    /// root is taken in f32, as the vectorized lanes can); each coefficient
+    /// root is taken in f32); each coefficient
     /// is rounded to f32 once.
     ///
     /// # Preconditions
@@ -109,14 +108,7 @@ impl Pair {
     /// `phi > SMALL_ANGLE` for the result to be slerp's (then `r` is below
     /// 2^13); those of [`angle`](Self::angle).
     #[inline(always)]
-    pub(super) fn slerp(
-        &self,
-        a: Quat,
-        b: Quat,
-        phi: f64,
-        alpha: f32,
-        sqrt: impl Fn(f32) -> f32,
-    ) -> Quat {
+    pub(super) fn slerp(&self, a: Quat, b: Quat, phi: f64, alpha: f32) -> Quat {
         let (w, x) = (f64::from(self.wedge), f64::from(self.dot));
         let inverse_sine_squared = ((w + x * x) / w).min(INVERSE_SINE_SQUARED_LIMIT);
         let r = f64::from(sqrt(inverse_sine_squared as f32));
@@ -153,18 +145,17 @@ impl Quat {
             return None;
         }
         // Never NaN here: the pair applies.
-        let phi = pair.angle(crate::float::sqrt);
+        let phi = pair.angle();
         if phi <= SMALL_ANGLE_F64 {
             return None;
         }
-        Some(pair.slerp(self, other, phi, alpha, crate::float::sqrt))
+        Some(pair.slerp(self, other, phi, alpha))
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::float::sqrt;
     use rand::{Rng, SeedableRng};
 
     /// A random unit quaternion (normalized from a cube, away from its
@@ -258,7 +249,7 @@ mod tests {
                 .map(|(y, x)| (y - dot * x).powi(2))
                 .sum::<f64>();
             let exact = along.sqrt().atan2(dot.abs());
-            let phi = Pair::of(a, b).angle(sqrt);
+            let phi = Pair::of(a, b).angle();
             assert!((phi - exact).abs() <= 1e-6 * exact + 1e-7, "{phi} {exact}");
         }
     }

@@ -20,10 +20,10 @@ impl Quat {
     /// On x86-64 and AArch64 (without `fast-math`), for `alpha` in (0, 1],
     /// the pairs go through the evaluation `slerp` itself takes there (its
     /// angle and sines in f64), written without a branch, blocks of 64
-    /// pairs at a time, which the compiler vectorizes. Its square root is
-    /// `float::sqrt_by_newton`, plain arithmetic, correctly rounded like
-    /// the square root of the single call. Every operation is the single
-    /// call's, in its order, so the results agree bit for bit where that
+    /// pairs at a time, which the compiler vectorizes (the square root
+    /// included: the crate's square root is the processor's instruction,
+    /// through an intrinsic the vectorizer sees). Every operation is the
+    /// single call's, in its order, so the results agree bit for bit where that
     /// evaluation is the one `slerp` takes; the pairs where it is not (not
     /// finite or not within 2^16 per component, 2^-12 rad apart or less,
     /// norms more than 1e-6 apart, a wedge small enough to underflow) are
@@ -72,7 +72,7 @@ impl Quat {
 mod lanes {
     use super::super::slerp_f64::{Pair, NORM_SQUARED_LIMIT, SMALL_ANGLE_F64};
     use super::Quat;
-    use crate::float::{select, sqrt_by_newton};
+    use crate::float::select;
 
     /// Pairs per block: the flags of a block live on the stack.
     const BLOCK: usize = 64;
@@ -98,8 +98,7 @@ mod lanes {
     }
 
     /// `Quat::slerp_f64` without a branch: the same functions on the same
-    /// numbers (with `sqrt_by_newton` for the square root, which agrees
-    /// with the crate's bit for bit), and whether its result is what
+    /// numbers, and whether its result is what
     /// `slerp` returns (when it is not, the value is some finite
     /// quaternion, to be replaced).
     #[inline(always)]
@@ -117,8 +116,8 @@ mod lanes {
         // A positive squared wedge where the evaluation does not apply
         // (it may be zero or lost to underflow there): no division by zero.
         pair.wedge = select(applies, pair.wedge, 1.0);
-        let phi = pair.angle(sqrt_by_newton);
+        let phi = pair.angle();
         let done = applies & (phi > SMALL_ANGLE_F64);
-        (pair.slerp(a, b, phi, alpha, sqrt_by_newton), done)
+        (pair.slerp(a, b, phi, alpha), done)
     }
 }
