@@ -107,11 +107,15 @@ mod lanes {
         // make no NaN from infinities): inputs beyond it, NaN among them,
         // are replaced before any other arithmetic, so that no operation
         // makes an infinity, and none a NaN.
-        let bounded =
-            (a.norm_squared() <= NORM_SQUARED_LIMIT) & (b.norm_squared() <= NORM_SQUARED_LIMIT);
+        let (n2, on2) = (a.norm_squared(), b.norm_squared());
+        let bounded = (n2 <= NORM_SQUARED_LIMIT) & (on2 <= NORM_SQUARED_LIMIT);
         let a = a.map(|c| select(bounded, c, 1.0));
         let b = b.map(|c| select(bounded, c, 1.0));
         let mut pair = Pair::of(a, b);
+        // The squared norms of the replaced inputs, without summing them
+        // again (where `bounded`, `a` and `b` are unchanged).
+        pair.n2 = select(bounded, n2, 4.0);
+        pair.on2 = select(bounded, on2, 4.0);
         let applies = bounded & pair.applies();
         // A positive squared wedge where the evaluation does not apply
         // (it may be zero or lost to underflow there): no division by zero.
