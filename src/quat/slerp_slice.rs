@@ -124,4 +124,64 @@ mod lanes {
         let done = applies & (phi > SMALL_ANGLE_F64);
         (pair.slerp(a, b, phi, alpha), done)
     }
+
+    #[cfg(test)]
+    mod tests {
+        use super::super::super::interpolate::SMALL_ANGLE;
+        use super::*;
+        use rand::{Rng, SeedableRng};
+
+        /// A random unit quaternion (normalized from a cube, away from its
+        /// centre).
+        fn unit(rng: &mut impl Rng) -> Quat {
+            loop {
+                let q = Quat::new(
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                );
+                if q.norm_squared() > 0.01 {
+                    return q.normalize();
+                }
+            }
+        }
+
+        /// A lane is done exactly where `slerp_f64` takes the pair, with
+        /// its result, bit for bit: random unit pairs, and each class of
+        /// input it leaves to the f32 evaluation.
+        #[test]
+        fn lanes_take_exactly_the_pairs_slerp_f64_takes() {
+            let mut rng = rand::rngs::StdRng::seed_from_u64(14);
+            let mut pairs: std::vec::Vec<(Quat, Quat)> = (0..10_000)
+                .map(|_| (unit(&mut rng), unit(&mut rng)))
+                .collect();
+            let (a, b) = (Quat::from_rotation_x(0.3), Quat::from_rotation_y(0.7));
+            let huge = Quat::new(1e5, 0.0, 0.0, 0.0);
+            pairs.extend([
+                (a, a),
+                (a, -a),
+                (a, a * Quat::from_rotation_z(2.0 * SMALL_ANGLE * 0.9)),
+                (a, a * Quat::from_rotation_z(2.0 * SMALL_ANGLE * 1.1)),
+                (a.map(|c| c * 1.01), b),
+                (huge, huge * Quat::from_rotation_x(1.0)),
+                (huge, b),
+                (Quat::NAN, b),
+                (a, Quat::new(f32::INFINITY, 0.0, 0.0, 0.0)),
+            ]);
+            let mut done_count = 0;
+            for (a, b) in pairs {
+                let alpha = rng.random_range(0.0..=1.0f32).max(f32::MIN_POSITIVE);
+                let (q, done) = in_plane(a, b, alpha);
+                let expected = a.slerp_f64(b, alpha);
+                assert_eq!(done, expected.is_some(), "{a:?} {b:?}");
+                if let Some(e) = expected {
+                    assert_eq!(q, e, "{a:?} {b:?} {alpha}");
+                    done_count += 1;
+                }
+            }
+            // Every random pair and the one just past the small angles.
+            assert_eq!(done_count, 10_001);
+        }
+    }
 }
