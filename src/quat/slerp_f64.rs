@@ -154,13 +154,13 @@ impl Quat {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use rand::{Rng, SeedableRng};
 
     /// A random unit quaternion (normalized from a cube, away from its
     /// centre).
-    fn unit(rng: &mut impl Rng) -> Quat {
+    pub(in crate::quat) fn unit(rng: &mut impl Rng) -> Quat {
         loop {
             let q = Quat::new(
                 rng.random_range(-1.0..1.0),
@@ -205,30 +205,48 @@ mod tests {
         assert!(a.map(|c| c * 1.01).slerp_f64(b, 0.5).is_none());
     }
 
-    /// What the evaluation leaves to the f32 one: `alpha` outside (0, 1],
-    /// norms more than 1e-6 apart, components beyond 2^16, non-finite
-    /// input, pairs 2^-12 rad apart or less (identical ones included).
-    #[test]
-    fn leaves_the_rare_inputs_to_the_f32_evaluation() {
-        let (a, b) = (Quat::from_rotation_x(0.3), Quat::from_rotation_y(0.7));
-        for alpha in [0.0, -0.25, 1.5, f32::NAN, f32::INFINITY] {
-            assert!(a.slerp_f64(b, alpha).is_none(), "alpha {alpha}");
-        }
+    /// Two ordinary unit quaternions, 1.37 rad apart.
+    pub(in crate::quat) fn ordinary_pair() -> (Quat, Quat) {
+        (Quat::from_rotation_x(0.3), Quat::from_rotation_y(0.7))
+    }
+
+    /// Pairs the evaluation leaves to the f32 one: norms more than 1e-6
+    /// apart, components beyond 2^16, non-finite input, pairs 2^-12 rad
+    /// apart or less (identical ones included).
+    pub(in crate::quat) fn rare_pairs() -> [(Quat, Quat); 8] {
+        let (a, b) = ordinary_pair();
         let near = a * Quat::from_rotation_z(2.0 * SMALL_ANGLE * 0.9);
         let huge = Quat::new(1e5, 0.0, 0.0, 0.0);
-        for (p, q) in [
+        [
             (a, a),
             (a, -a),
             (a, near),
             (a.map(|c| c * 1.01), b),
             (huge, huge * Quat::from_rotation_x(1.0)),
+            (huge, b),
             (Quat::NAN, b),
             (a, Quat::new(f32::INFINITY, 0.0, 0.0, 0.0)),
-        ] {
+        ]
+    }
+
+    /// The pair just past the small angles, which the evaluation takes.
+    pub(in crate::quat) fn just_past_the_small_angles() -> (Quat, Quat) {
+        let (a, _) = ordinary_pair();
+        (a, a * Quat::from_rotation_z(2.0 * SMALL_ANGLE * 1.1))
+    }
+
+    /// What the evaluation leaves to the f32 one: `alpha` outside (0, 1],
+    /// and the rare pairs.
+    #[test]
+    fn leaves_the_rare_inputs_to_the_f32_evaluation() {
+        let (a, b) = ordinary_pair();
+        for alpha in [0.0, -0.25, 1.5, f32::NAN, f32::INFINITY] {
+            assert!(a.slerp_f64(b, alpha).is_none(), "alpha {alpha}");
+        }
+        for (p, q) in rare_pairs() {
             assert!(p.slerp_f64(q, 0.5).is_none(), "{p:?} {q:?}");
         }
-        // Just past the small angles, taken.
-        let past = a * Quat::from_rotation_z(2.0 * SMALL_ANGLE * 1.1);
+        let (a, past) = just_past_the_small_angles();
         assert!(a.slerp_f64(past, 0.5).is_some());
     }
 

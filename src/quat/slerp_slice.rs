@@ -127,25 +127,9 @@ mod lanes {
 
     #[cfg(test)]
     mod tests {
-        use super::super::super::interpolate::SMALL_ANGLE;
+        use super::super::super::slerp_f64::tests::{just_past_the_small_angles, rare_pairs, unit};
         use super::*;
         use rand::{Rng, SeedableRng};
-
-        /// A random unit quaternion (normalized from a cube, away from its
-        /// centre).
-        fn unit(rng: &mut impl Rng) -> Quat {
-            loop {
-                let q = Quat::new(
-                    rng.random_range(-1.0..1.0),
-                    rng.random_range(-1.0..1.0),
-                    rng.random_range(-1.0..1.0),
-                    rng.random_range(-1.0..1.0),
-                );
-                if q.norm_squared() > 0.01 {
-                    return q.normalize();
-                }
-            }
-        }
 
         /// A lane is done exactly where `slerp_f64` takes the pair, with
         /// its result, bit for bit: random unit pairs, and each class of
@@ -156,19 +140,8 @@ mod lanes {
             let mut pairs: std::vec::Vec<(Quat, Quat)> = (0..10_000)
                 .map(|_| (unit(&mut rng), unit(&mut rng)))
                 .collect();
-            let (a, b) = (Quat::from_rotation_x(0.3), Quat::from_rotation_y(0.7));
-            let huge = Quat::new(1e5, 0.0, 0.0, 0.0);
-            pairs.extend([
-                (a, a),
-                (a, -a),
-                (a, a * Quat::from_rotation_z(2.0 * SMALL_ANGLE * 0.9)),
-                (a, a * Quat::from_rotation_z(2.0 * SMALL_ANGLE * 1.1)),
-                (a.map(|c| c * 1.01), b),
-                (huge, huge * Quat::from_rotation_x(1.0)),
-                (huge, b),
-                (Quat::NAN, b),
-                (a, Quat::new(f32::INFINITY, 0.0, 0.0, 0.0)),
-            ]);
+            pairs.extend(rare_pairs());
+            pairs.push(just_past_the_small_angles());
             let mut done_count = 0;
             for (a, b) in pairs {
                 let alpha = rng.random_range(0.0..=1.0f32).max(f32::MIN_POSITIVE);
