@@ -9,8 +9,9 @@ use super::sqrt::sqrt;
 /// error, so above this threshold the relative error it causes is at most
 /// 2^-50, far below one ulp (2^-24).
 pub(crate) const SQUARES_UNDERFLOW: f32 = f32::from_bits((127 - 100) << 23);
-/// Whether a sum of squares lies in [`SQUARES_UNDERFLOW`], `f32::MAX`], where
-/// it needs no rescaling: one unsigned comparison of the bits. For
+/// Whether a sum of squares lies between [`SQUARES_UNDERFLOW`] and
+/// `f32::MAX` (both included), where it needs no rescaling: one unsigned
+/// comparison of the bits. For
 /// non-negative floats the order of the bits is the order of the values;
 /// NaN (either sign), infinity and negative numbers, -0 among them, have
 /// bits outside the range and give `false`.
