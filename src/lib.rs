@@ -73,8 +73,8 @@
 //!
 //! | feature | what it adds |
 //! | --- | --- |
-//! | (default) | f32 atan2, sine and cosine kernels, each within 1 to 1.6 ulp (no f64 arithmetic, so no soft-float code on a Cortex-M4F); on x86-64 and AArch64 only, where f64 costs what f32 does, slerp's angle and sines in f64 (one polynomial each, below a tenth of an f32 ulp but the angle's square root); the FPU's square root on Arm hard-float targets; libm for the rest |
-//! | `fast-math` | `micromath`'s atan2, sine, cosine and tangent where they hold (the default sine and cosine kernel beyond 2^9 rad): far less accurate (see [`accuracy`]). On the Cortex-M4F a few percent faster where atan2 or the sines dominate (slerp 357 instructions instead of 366, `Smoother::update` 330 instead of 384), but not smaller: a firmware with the filter, slerp and `RigTForm` takes 13,288 bytes of flash instead of 13,128, and on the Cortex-M0 14,668 instead of 13,708 |
+//! | (default) | f32 atan2, sine and cosine kernels, each within 1 to 1.6 ulp (no f64 arithmetic, so no soft-float code on a Cortex-M4F); on x86-64 and AArch64 only, where f64 costs what f32 does, slerp's angle and sines in f64 (one polynomial each, below a tenth of an f32 ulp but the angle's square root); the processor's square root instruction on Arm hard-float targets, x86-64 and AArch64; libm for the rest |
+//! | `fast-math` | `micromath`'s atan2, sine, cosine and tangent where they hold (the default sine and cosine kernel beyond 2^9 rad): far less accurate (see [`accuracy`]). On the Cortex-M4F a few percent faster where atan2 or the sines dominate (slerp 354 instructions instead of 357, `Smoother::update` 327 instead of 375), but not smaller: a firmware with the filter, slerp and `RigTForm` takes 12,828 bytes of flash instead of 12,700, and on the Cortex-M0 14,588 instead of 13,672 |
 //! | `defmt` | `defmt::Format` for every public type, for logging on target |
 //! | `mint` | `From` conversions to and from `mint` types (interop with glam, nalgebra, cgmath), and `mint::IntoMint` |
 //! | `serde` | `Serialize` and `Deserialize` for every public type, the attitude filter's state included |
