@@ -326,8 +326,8 @@ impl Quat {
         // Divided by its norm where the sum of squares needs no rescaling
         // (every unit pair but extreme extrapolation), checked by one
         // comparison; `normalize` does the rest. Through `normalize` (its
-        // sum in sequence, its two range checks) every call would take
-        // about a quarter longer on x86-64.
+        // sum in sequence, a second range check before the division) every
+        // call would take about a fifth longer on x86-64 (5.4 against 4.5 ns).
         let sum = pairwise(lerp, lerp);
         if float::needs_no_rescaling(sum) {
             let n = float::sqrt(sum);

@@ -100,8 +100,7 @@ impl Pair {
     /// `r = 1 / sin(phi)` from the wedge and the dot product. `alpha phi`
     /// and `(1 - alpha) phi` are exact or within an f64 ulp, the sines
     /// within a tenth of an f32 ulp, `r` within 0.75 of one (its square
-    /// root is taken in f32); each coefficient
-    /// is rounded to f32 once.
+    /// root is taken in f32); each coefficient is rounded to f32 once.
     ///
     /// # Preconditions
     ///

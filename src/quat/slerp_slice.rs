@@ -23,8 +23,8 @@ impl Quat {
     /// pairs at a time, which the compiler vectorizes (the square root
     /// included: the crate's square root is the processor's instruction,
     /// through an intrinsic the vectorizer sees). Every operation is the
-    /// single call's, in its order, so the results agree bit for bit where that
-    /// evaluation is the one `slerp` takes; the pairs where it is not (not
+    /// single call's, in its order, so the results agree bit for bit where
+    /// that evaluation is the one `slerp` takes; the pairs where it is not (not
     /// finite or not within 2^16 per component, 2^-12 rad apart or less,
     /// norms more than 1e-6 apart, a wedge small enough to underflow) are
     /// then done again by `slerp` itself. Every other `alpha`, and every
