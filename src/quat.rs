@@ -21,6 +21,7 @@ mod exp_log;
 mod from_matrix;
 mod interpolate;
 mod power;
+mod product;
 mod rotation_arc;
 #[cfg(all(
     any(target_arch = "x86_64", target_arch = "aarch64"),
@@ -521,7 +522,8 @@ impl Mul<Quat> for Quat {
 
     /// The Hamilton product of the notes' "Operations":
     /// `[w1 w2 - c1.c2, w1 c2 + w2 c1 + c1 x c2]`. As rotations, `a * b`
-    /// applies `b` first, then `a`.
+    /// applies `b` first, then `a`. On x86-64 the four components are
+    /// summed at once in SSE registers, with the same bits as the formula.
     ///
     /// Accuracy: for unit inputs the product is within
     /// [`accuracy::MUL_MAX_ANGLE_ERROR`](crate::accuracy::MUL_MAX_ANGLE_ERROR)
@@ -536,12 +538,7 @@ impl Mul<Quat> for Quat {
     /// ```
     #[inline]
     fn mul(self, o: Quat) -> Quat {
-        Quat::new(
-            self.w * o.w - self.x * o.x - self.y * o.y - self.z * o.z,
-            self.w * o.x + self.x * o.w + self.y * o.z - self.z * o.y,
-            self.w * o.y - self.x * o.z + self.y * o.w + self.z * o.x,
-            self.w * o.z + self.x * o.y - self.y * o.x + self.z * o.w,
-        )
+        product::hamilton(self, o)
     }
 }
 

@@ -17,11 +17,12 @@
 //! # Safety, and the crate's `unsafe` rule
 //!
 //! The crate has no `unsafe` code of its own but the processor's square
-//! root instruction.
+//! root instruction and, on x86-64, the quaternion product in SSE
+//! registers.
 //! The `unsafe impl`s of these two traits are written by bytemuck's
 //! derive macros, which refuse to compile unless the type is `repr(C)`,
 //! has no padding and has only `Pod` fields; the crate's `unsafe_code`
-//! lint (`forbid`, or `deny` where the square root needs `unsafe`) does not fire on
+//! lint (`forbid`, or `deny` where those need `unsafe`) does not fire on
 //! code that a derive macro generates.
 //!
 //! ```
