@@ -29,6 +29,7 @@ mod rotation_arc;
 ))]
 mod slerp_f64;
 mod slerp_slice;
+pub(crate) use slerp_slice::slerp_slice_by;
 
 pub use euler::EulerRot;
 

@@ -245,8 +245,9 @@ impl RigTForm {
     /// into `out[i]`: element by element, bit for bit, what
     /// [`interpolate`](Self::interpolate) returns for the pair, whatever
     /// the inputs (where that is NaN, a NaN: Rust leaves the sign and
-    /// payload of a NaN result unspecified). The rotations go, 64 at a time, through
-    /// [`Quat::slerp_slice`] (vectorized on x86-64 and AArch64).
+    /// payload of a NaN result unspecified). The rotations are slerped
+    /// where they lie, as [`Quat::slerp_slice`] slerps (vectorized on
+    /// x86-64 and AArch64), each lerp of the translations beside its slerp.
     ///
     /// Slices of different lengths: the first
     /// `min(starts.len(), ends.len(), out.len())` elements are written, and
@@ -272,29 +273,8 @@ impl RigTForm {
     /// assert_eq!(out[1], starts[1].interpolate(ends[1], 0.5));
     /// ```
     pub fn interpolate_slice(starts: &[Self], ends: &[Self], alpha: f32, out: &mut [Self]) {
-        /// Rotations per block, gathered on the stack.
-        const BLOCK: usize = 64;
-        let blocks = starts
-            .chunks(BLOCK)
-            .zip(ends.chunks(BLOCK))
-            .zip(out.chunks_mut(BLOCK));
-        for ((starts, ends), out) in blocks {
-            let mut r0 = [Quat::IDENTITY; BLOCK];
-            let mut r1 = [Quat::IDENTITY; BLOCK];
-            let mut r = [Quat::IDENTITY; BLOCK];
-            for ((a, b), (r0, r1)) in starts.iter().zip(ends).zip(r0.iter_mut().zip(&mut r1)) {
-                (*r0, *r1) = (a.r, b.r);
-            }
-            // The block's length: the shortest of the three chunks.
-            let k = starts.len().min(ends.len()).min(out.len());
-            let (r0, r1, r) = (r0.get(..k), r1.get(..k), r.get_mut(..k));
-            if let (Some(r0), Some(r1), Some(r)) = (r0, r1, r) {
-                Quat::slerp_slice(r0, r1, alpha, r);
-                for (((a, b), o), &r) in starts.iter().zip(ends).zip(out.iter_mut()).zip(&*r) {
-                    *o = Self::new(a.t.lerp(b.t, alpha), r);
-                }
-            }
-        }
+        let finish = |a: Self, b: Self, r| Self::new(a.t.lerp(b.t, alpha), r);
+        crate::quat::slerp_slice_by(starts, ends, alpha, out, |x| x.r, finish);
     }
 }
 

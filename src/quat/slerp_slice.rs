@@ -51,16 +51,33 @@ impl Quat {
     /// ```
     #[doc(alias = "slerp_many")]
     pub fn slerp_slice(starts: &[Quat], ends: &[Quat], alpha: f32, out: &mut [Quat]) {
-        #[cfg(all(
-            any(target_arch = "x86_64", target_arch = "aarch64"),
-            not(feature = "fast-math")
-        ))]
-        if alpha > 0.0 && alpha <= 1.0 {
-            return lanes::slerp_in_blocks(starts, ends, alpha, out);
-        }
-        for ((&a, &b), o) in starts.iter().zip(ends).zip(out.iter_mut()) {
-            *o = a.slerp(b, alpha);
-        }
+        slerp_slice_by(starts, ends, alpha, out, |q| q, |_, _, q| q);
+    }
+}
+
+/// For every pair `(starts[i], ends[i])`, `out[i] = finish(starts[i],
+/// ends[i], rotation(starts[i]).slerp(rotation(ends[i]), alpha))`, with
+/// the slerps evaluated as [`Quat::slerp_slice`] says: the rotations of
+/// values that hold one (`RigTForm`'s), slerped in place, without copying
+/// them out first.
+#[inline(always)]
+pub(crate) fn slerp_slice_by<T: Copy>(
+    starts: &[T],
+    ends: &[T],
+    alpha: f32,
+    out: &mut [T],
+    rotation: impl Fn(T) -> Quat,
+    finish: impl Fn(T, T, Quat) -> T,
+) {
+    #[cfg(all(
+        any(target_arch = "x86_64", target_arch = "aarch64"),
+        not(feature = "fast-math")
+    ))]
+    if alpha > 0.0 && alpha <= 1.0 {
+        return lanes::slerp_in_blocks(starts, ends, alpha, out, rotation, finish);
+    }
+    for ((&a, &b), o) in starts.iter().zip(ends).zip(out.iter_mut()) {
+        *o = finish(a, b, rotation(a).slerp(rotation(b), alpha));
     }
 }
 
@@ -77,8 +94,16 @@ mod lanes {
     /// Pairs per block: the flags of a block live on the stack.
     const BLOCK: usize = 64;
 
-    /// [`Quat::slerp_slice`] for `alpha` in (0, 1].
-    pub(super) fn slerp_in_blocks(starts: &[Quat], ends: &[Quat], alpha: f32, out: &mut [Quat]) {
+    /// [`slerp_slice_by`](super::slerp_slice_by) for `alpha` in (0, 1].
+    #[inline(always)]
+    pub(super) fn slerp_in_blocks<T: Copy>(
+        starts: &[T],
+        ends: &[T],
+        alpha: f32,
+        out: &mut [T],
+        rotation: impl Fn(T) -> Quat,
+        finish: impl Fn(T, T, Quat) -> T,
+    ) {
         let blocks = starts
             .chunks(BLOCK)
             .zip(ends.chunks(BLOCK))
@@ -86,36 +111,37 @@ mod lanes {
         for ((starts, ends), out) in blocks {
             let mut done = [false; BLOCK];
             for (((&a, &b), o), d) in starts.iter().zip(ends).zip(out.iter_mut()).zip(&mut done) {
-                (*o, *d) = in_plane(a, b, alpha);
+                let (q, in_plane_done) = in_plane(rotation(a), rotation(b), alpha);
+                (*o, *d) = (finish(a, b, q), in_plane_done);
             }
             let rest = starts.iter().zip(ends).zip(out.iter_mut()).zip(&done);
             for (((&a, &b), o), &d) in rest {
                 if !d {
-                    *o = a.slerp(b, alpha);
+                    *o = finish(a, b, rotation(a).slerp(rotation(b), alpha));
                 }
             }
         }
     }
 
     /// `Quat::slerp_f64` without a branch: the same functions on the same
-    /// numbers, and whether its result is what
-    /// `slerp` returns (when it is not, the value is some finite
-    /// quaternion, to be replaced).
+    /// numbers, and whether its result is what `slerp` returns (when it is
+    /// not, the value is some quaternion, NaN or infinite components
+    /// possible, to be replaced).
     #[inline(always)]
     fn in_plane(a: Quat, b: Quat, alpha: f32) -> (Quat, bool) {
-        // The check `slerp_f64` makes first, on the squared norms (which
-        // make no NaN from infinities): inputs beyond it, NaN among them,
-        // are replaced before any other arithmetic, so that no operation
-        // makes an infinity, and none a NaN.
+        // Where the inputs are beyond the check `slerp_f64` makes first
+        // (squared norms within NORM_SQUARED_LIMIT: infinities and NaN
+        // among them), the arithmetic below may make infinities and NaN
+        // (inf - inf in the minors) in that lane, and the lane is not done:
+        // its value is replaced by `slerp`'s. Replacing such inputs by
+        // finite ones first, select by select, cost a tenth of the time of
+        // every lane. No Kani harness runs this path.
         let (n2, on2) = (a.norm_squared(), b.norm_squared());
-        let bounded = (n2 <= NORM_SQUARED_LIMIT) & (on2 <= NORM_SQUARED_LIMIT);
-        let a = a.map(|c| select(bounded, c, 1.0));
-        let b = b.map(|c| select(bounded, c, 1.0));
         let mut pair = Pair::of(a, b);
-        // The squared norms of the replaced inputs, without summing them
-        // again (where `bounded`, `a` and `b` are unchanged).
-        pair.n2 = select(bounded, n2, 4.0);
-        pair.on2 = select(bounded, on2, 4.0);
+        // `applies` checks the bounds too; checked here as well, from the
+        // norms summed first, the compiler schedules the lane about 3 %
+        // faster (11.85 against 12.24 ns per pair, one process).
+        let bounded = (n2 <= NORM_SQUARED_LIMIT) & (on2 <= NORM_SQUARED_LIMIT);
         let applies = bounded & pair.applies();
         // A positive squared wedge where the evaluation does not apply
         // (it may be zero or lost to underflow there): no division by zero.
