@@ -79,7 +79,7 @@
 //! | `defmt` | `defmt::Format` for every public type, for logging on target |
 //! | `mint` | `From` conversions to and from `mint` types (interop with glam, nalgebra, cgmath), and `mint::IntoMint` |
 //! | `serde` | `Serialize` and `Deserialize` for every public type, the attitude filter's state included |
-//! | `bytemuck` | `Pod` and `Zeroable` for the vectors, `Quat`, `RigTForm`, `Matrix4`, `Smoother` and `FilterParams` (GPU uploads, wire formats) |
+//! | `bytemuck` | `Pod` and `Zeroable` for the vectors, `Quat`, `RigTForm`, `Matrix4`, `Smoother`, `FilterParams`, `InertialCalibration` and `MagneticCalibration` (GPU uploads, wire formats) |
 //! | `approx` | `AbsDiffEq`, `RelativeEq` and `UlpsEq`, component by component (compare rotations with [`Quat::angle_to`]) |
 //!
 //! The library never needs `std`. It builds with Rust 1.84 or newer, with

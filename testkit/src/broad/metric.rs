@@ -65,15 +65,29 @@ pub struct Run {
 /// Runs the filter over `samples` from the first one, 6D or with the
 /// magnetometer, and scores it.
 pub fn run(samples: &[BroadSample], params: FilterParams, with_mag: bool) -> Run {
+    run_observed(samples, params, with_mag, |_, _, _| {})
+}
+
+/// [`run`], calling `observe` after each update with the sample's index,
+/// the sample and the filter (for its diagnostics and outputs).
+pub fn run_observed(
+    samples: &[BroadSample],
+    params: FilterParams,
+    with_mag: bool,
+    mut observe: impl FnMut(usize, &BroadSample, &OrientationFilter),
+) -> Run {
     let mut filter = OrientationFilter::new(params);
     let estimates: Vec<Quat> = samples
         .iter()
-        .map(|s| {
-            if with_mag {
+        .enumerate()
+        .map(|(i, s)| {
+            let q = if with_mag {
                 filter.update_with_mag(s.gyr, s.acc, s.mag, BROAD_DT)
             } else {
                 filter.update(s.gyr, s.acc, BROAD_DT)
-            }
+            };
+            observe(i, s, &filter);
+            q
         })
         .collect();
     let rmse = score(samples, &estimates);
