@@ -94,6 +94,13 @@ mod tests {
 
     #[test]
     fn by_lanes_is_by_formula_bit_for_bit() {
+        let q = Quat::new(0.0, 1.0, 2.0, 3.0);
+        assert!(same(q, q) && same(Quat::NAN, Quat::NAN));
+        assert!(!same(q, Quat::new(-0.0, 1.0, 2.0, 3.0)));
+        assert!(!same(
+            Quat::NAN,
+            Quat::new(f32::NAN, 1.0, f32::NAN, f32::NAN)
+        ));
         let mut rng = rand::rngs::StdRng::seed_from_u64(7);
         let special = [
             0.0,
