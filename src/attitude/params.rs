@@ -103,14 +103,20 @@ pub struct FilterParams {
     pub mag_gate: f32,
     /// The gyro's full scale in rad/s (default `f32::MAX`: unknown, no
     /// saturation detected for finite readings; finite so that formats
-    /// without infinity, such as JSON, can store the parameters). A reading within 1 % of it on any axis is
-    /// taken as saturated (a sensor at full scale reads its largest code,
+    /// without infinity, such as JSON, can store the parameters). A reading
+    /// within 1 % of it on any axis is taken as saturated (a sensor at full scale reads its largest code,
     /// which scale calibration may move slightly below the range): the
     /// integrated gyro has lost the true rate, so the filter recovers as at
     /// start-up, with time constants that start at zero and grow back to
     /// `tau_acc` and `tau_mag` over `tau_acc` seconds after the last
     /// saturated sample (see [`Diagnostics`](super::Diagnostics)). Set it
-    /// to the sensor's range, for instance 2000 °/s, 34.9 rad/s.
+    /// to the sensor's range, for instance 2000 °/s, 34.9 rad/s, where
+    /// saturation is rare (a spin, a knock). Where the motion exceeds the
+    /// range again and again, leave it unset: each saturated sample
+    /// restarts the short time constants, and the filter then follows the
+    /// accelerometer through linear accelerations (BROAD trial 16 read by
+    /// a 350 °/s gyro, 1,011 samples at the range: 6D inclination RMSE
+    /// 54° with the range set, 3.5° without).
     pub gyro_range: f32,
 }
 
