@@ -1,16 +1,18 @@
 //! The attitude module on target: the exponential map against `pow`, gyro
 //! integration, the smoother's time constant, and the orientation filter's
 //! update on synthetic samples (inclination, rest bias, heading, bad input,
-//! recovery after the gyro range), and the axes alignment and calibration.
+//! recovery after the gyro range, a magnet nearby), the outputs, and the
+//! axes alignment and calibrations.
 
 use rigtform::accuracy::{
-    ATAN2_MAX_ABS_ERROR, EXP_LOG_POW_MAX_ANGLE_ERROR, INTEGRATE_STEP_MAX_ANGLE_ERROR,
+    ATAN2_MAX_ABS_ERROR, EULER_MAX_ANGLE_ERROR, EXP_LOG_POW_MAX_ANGLE_ERROR, INTEGRATE_STEP_MAX_ANGLE_ERROR,
     SMOOTHER_DECAY_MAX_ERROR,
 };
 use rigtform::attitude::{
-    AxesAlignment, Axis, FilterParams, MagneticCalibration, OrientationFilter, Smoother,
+    AxesAlignment, Axis, FilterParams, InertialCalibration, MagneticCalibration,
+    OrientationFilter, Smoother,
 };
-use rigtform::{Cvec3, Quat};
+use rigtform::{Cvec3, EulerRot, Quat};
 use rigtform_proofs::draw::Draws;
 use rigtform_proofs::laws::Violation;
 use rigtform_proofs::reference::Quat64;
@@ -150,6 +152,72 @@ pub fn check_all(t: &mut Tally, draws: u32) {
             0.01,
             1,
         )
+    });
+    t.check("filter_outputs_agree_with_the_attitude_and_ignore_a_magnet", || {
+        // Still at a known tilt and heading, with the field of a place: the
+        // outputs against the truth, then a magnet that doubles the field.
+        let truth = Quat::from_euler(EulerRot::ZYX, 0.4, -0.2, 0.3);
+        let (g, field) = (Cvec3::new(0.0, 0.0, 9.81), Cvec3::new(0.0, 16.0, -41.0));
+        let (acc, mag) = (truth.inv() * g, truth.inv() * field);
+        let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+        for _ in 0..500 {
+            f.update_with_mag(Cvec3::ZERO, acc, mag, 0.01);
+        }
+        // The compass heading of the truth's y axis (tilted, so not -yaw).
+        let forward = truth * Cvec3::Y;
+        let heading_of_y = libm::atan2f(forward.x, forward.y);
+        let (yaw, pitch, roll) = f.euler(EulerRot::ZYX);
+        let rebuilt = Quat::from_euler(EulerRot::ZYX, yaw, pitch, roll);
+        let errors = [
+            f.attitude().angle_to(truth),
+            rebuilt.angle_to(truth),
+            (f.heading() - heading_of_y).abs(),
+            (f.gravity() - acc).norm() / 9.81,
+            f.linear_acceleration(acc).norm() / 9.81,
+            f.earth_acceleration(acc).norm() / 9.81,
+        ];
+        let worst = errors.iter().fold(0.0f32, |w, &e| w.max(e));
+        f.update_with_mag(Cvec3::ZERO, acc, mag * 2.0, 0.01);
+        let d = f.diagnostics();
+        let flags_ok = d.mag_ignored && d.resting && !d.acc_ignored && !d.initialising;
+        let error = if flags_ok { worst } else { 1.0 };
+        // The heading is an atan2 and the Euler angles go through atan2s:
+        // their bounds (wide with fast-math), or 1e-3 of the filter's own.
+        let bound = ATAN2_MAX_ABS_ERROR.max(EULER_MAX_ANGLE_ERROR).max(1e-3);
+        within("outputs and magnet", error.into(), bound.into(), 6)
+    });
+    t.check("calibrations_undo_offsets_scales_and_soft_iron", || {
+        // A reading made by a gyro with an offset, scale errors and a small
+        // misalignment, and by a magnetometer with hard and soft iron,
+        // taken back by the calibrations built from those errors.
+        let v = Cvec3::new(0.3, -1.2, 0.7);
+        let (offset, scale) = (Cvec3::new(0.01, -0.02, 0.005), Cvec3::new(1.02, 0.97, 1.01));
+        let (c, s) = (0.999_8, 0.019_998_667); // cos and sin of 0.02 rad
+        let turned = Cvec3::new(c * v.x - s * v.y, s * v.x + c * v.y, v.z);
+        let read = Cvec3::new(turned.x * scale.x, turned.y * scale.y, turned.z * scale.z) + offset;
+        let gyro = InertialCalibration {
+            misalignment: [
+                Cvec3::new(c, s, 0.0),
+                Cvec3::new(-s, c, 0.0),
+                Cvec3::new(0.0, 0.0, 1.0),
+            ],
+            sensitivity: Cvec3::new(1.0 / scale.x, 1.0 / scale.y, 1.0 / scale.z),
+            offset,
+        };
+        let field = Cvec3::new(3.0, 16.0, -41.0);
+        let hard_iron = Cvec3::new(20.0, -5.0, 8.0);
+        let measured = Cvec3::new(field.x * 1.1, field.y * 0.9, field.z) + hard_iron;
+        let mag = MagneticCalibration {
+            soft_iron: [
+                Cvec3::new(1.0 / 1.1, 0.0, 0.0),
+                Cvec3::new(0.0, 1.0 / 0.9, 0.0),
+                Cvec3::new(0.0, 0.0, 1.0),
+            ],
+            hard_iron,
+        };
+        let error = ((gyro.apply(read) - v).norm() / v.norm())
+            .max((mag.apply(measured) - field).norm() / field.norm());
+        within("calibrations", error.into(), 1e-5, 2)
     });
     t.check("axes_alignment_and_calibration_undo_a_mounting", || {
         // Every one of the 24 mountings turns a reading without changing
