@@ -5,12 +5,12 @@
 //! axes alignment and calibrations.
 
 use rigtform::accuracy::{
-    ATAN2_MAX_ABS_ERROR, EULER_MAX_ANGLE_ERROR, EXP_LOG_POW_MAX_ANGLE_ERROR, INTEGRATE_STEP_MAX_ANGLE_ERROR,
-    SMOOTHER_DECAY_MAX_ERROR,
+    ATAN2_MAX_ABS_ERROR, EULER_MAX_ANGLE_ERROR, EXP_LOG_POW_MAX_ANGLE_ERROR,
+    INTEGRATE_STEP_MAX_ANGLE_ERROR, SMOOTHER_DECAY_MAX_ERROR,
 };
 use rigtform::attitude::{
-    AxesAlignment, Axis, FilterParams, InertialCalibration, MagneticCalibration,
-    OrientationFilter, Smoother,
+    AxesAlignment, Axis, FilterParams, InertialCalibration, MagneticCalibration, OrientationFilter,
+    Smoother,
 };
 use rigtform::{Cvec3, EulerRot, Quat};
 use rigtform_proofs::draw::Draws;
@@ -153,39 +153,42 @@ pub fn check_all(t: &mut Tally, draws: u32) {
             1,
         )
     });
-    t.check("filter_outputs_agree_with_the_attitude_and_ignore_a_magnet", || {
-        // Still at a known tilt and heading, with the field of a place: the
-        // outputs against the truth, then a magnet that doubles the field.
-        let truth = Quat::from_euler(EulerRot::ZYX, 0.4, -0.2, 0.3);
-        let (g, field) = (Cvec3::new(0.0, 0.0, 9.81), Cvec3::new(0.0, 16.0, -41.0));
-        let (acc, mag) = (truth.inv() * g, truth.inv() * field);
-        let mut f = OrientationFilter::new(FilterParams::DEFAULT);
-        for _ in 0..500 {
-            f.update_with_mag(Cvec3::ZERO, acc, mag, 0.01);
-        }
-        // The compass heading of the truth's y axis (tilted, so not -yaw).
-        let forward = truth * Cvec3::Y;
-        let heading_of_y = libm::atan2f(forward.x, forward.y);
-        let (yaw, pitch, roll) = f.euler(EulerRot::ZYX);
-        let rebuilt = Quat::from_euler(EulerRot::ZYX, yaw, pitch, roll);
-        let errors = [
-            f.attitude().angle_to(truth),
-            rebuilt.angle_to(truth),
-            (f.heading() - heading_of_y).abs(),
-            (f.gravity() - acc).norm() / 9.81,
-            f.linear_acceleration(acc).norm() / 9.81,
-            f.earth_acceleration(acc).norm() / 9.81,
-        ];
-        let worst = errors.iter().fold(0.0f32, |w, &e| w.max(e));
-        f.update_with_mag(Cvec3::ZERO, acc, mag * 2.0, 0.01);
-        let d = f.diagnostics();
-        let flags_ok = d.mag_ignored && d.resting && !d.acc_ignored && !d.initialising;
-        let error = if flags_ok { worst } else { 1.0 };
-        // The heading is an atan2 and the Euler angles go through atan2s:
-        // their bounds (wide with fast-math), or 1e-3 of the filter's own.
-        let bound = ATAN2_MAX_ABS_ERROR.max(EULER_MAX_ANGLE_ERROR).max(1e-3);
-        within("outputs and magnet", error.into(), bound.into(), 6)
-    });
+    t.check(
+        "filter_outputs_agree_with_the_attitude_and_ignore_a_magnet",
+        || {
+            // Still at a known tilt and heading, with the field of a place: the
+            // outputs against the truth, then a magnet that doubles the field.
+            let truth = Quat::from_euler(EulerRot::ZYX, 0.4, -0.2, 0.3);
+            let (g, field) = (Cvec3::new(0.0, 0.0, 9.81), Cvec3::new(0.0, 16.0, -41.0));
+            let (acc, mag) = (truth.inv() * g, truth.inv() * field);
+            let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+            for _ in 0..500 {
+                f.update_with_mag(Cvec3::ZERO, acc, mag, 0.01);
+            }
+            // The compass heading of the truth's y axis (tilted, so not -yaw).
+            let forward = truth * Cvec3::Y;
+            let heading_of_y = libm::atan2f(forward.x, forward.y);
+            let (yaw, pitch, roll) = f.euler(EulerRot::ZYX);
+            let rebuilt = Quat::from_euler(EulerRot::ZYX, yaw, pitch, roll);
+            let errors = [
+                f.attitude().angle_to(truth),
+                rebuilt.angle_to(truth),
+                (f.heading() - heading_of_y).abs(),
+                (f.gravity() - acc).norm() / 9.81,
+                f.linear_acceleration(acc).norm() / 9.81,
+                f.earth_acceleration(acc).norm() / 9.81,
+            ];
+            let worst = errors.iter().fold(0.0f32, |w, &e| w.max(e));
+            f.update_with_mag(Cvec3::ZERO, acc, mag * 2.0, 0.01);
+            let d = f.diagnostics();
+            let flags_ok = d.mag_ignored && d.resting && !d.acc_ignored && !d.initialising;
+            let error = if flags_ok { worst } else { 1.0 };
+            // The heading is an atan2 and the Euler angles go through atan2s:
+            // their bounds (wide with fast-math), or 1e-3 of the filter's own.
+            let bound = ATAN2_MAX_ABS_ERROR.max(EULER_MAX_ANGLE_ERROR).max(1e-3);
+            within("outputs and magnet", error.into(), bound.into(), 6)
+        },
+    );
     t.check("calibrations_undo_offsets_scales_and_soft_iron", || {
         // A reading made by a gyro with an offset, scale errors and a small
         // misalignment, and by a magnetometer with hard and soft iron,
