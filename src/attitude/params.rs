@@ -104,8 +104,9 @@ pub struct FilterParams {
     /// The gyro's full scale in rad/s (default `f32::MAX`: unknown, no
     /// saturation detected for finite readings; finite so that formats
     /// without infinity, such as JSON, can store the parameters). A reading
-    /// within 1 % of it on any axis is taken as saturated (a sensor at full scale reads its largest code,
-    /// which scale calibration may move slightly below the range): the
+    /// within 1 % of it on any axis is taken as saturated (a sensor at full
+    /// scale reads its largest code, which scale calibration may move
+    /// slightly below the range): the
     /// integrated gyro has lost the true rate, so the filter recovers as at
     /// start-up, with time constants that start at zero and grow back to
     /// `tau_acc` and `tau_mag` over `tau_acc` seconds after the last
