@@ -47,7 +47,29 @@ mod sqrt;
 #[cfg(test)]
 mod sweep;
 
+/// What the portable lanes of `Quat::slerp_slice` use besides.
+#[cfg(all(
+    any(target_arch = "x86_64", target_arch = "aarch64"),
+    not(all(target_arch = "x86_64", target_feature = "avx", not(kani))),
+    not(feature = "fast-math")
+))]
+pub(crate) use bits::select;
 pub(crate) use bits::SIGN;
+/// What the vectorizable lanes of `Quat::slerp_slice` share with the single
+/// call.
+#[cfg(all(
+    any(target_arch = "x86_64", target_arch = "aarch64"),
+    not(feature = "fast-math")
+))]
+pub(crate) use double::{atan2_of_root, sin_to_quarter_turn};
+/// The coefficients the AVX lanes of `Quat::slerp_slice` evaluate.
+#[cfg(all(
+    target_arch = "x86_64",
+    target_feature = "avx",
+    not(kani),
+    not(feature = "fast-math")
+))]
+pub(crate) use double::{ATAN as ATAN_F64, SIN as SIN_F64};
 #[cfg(all(
     any(target_arch = "x86_64", target_arch = "aarch64"),
     not(feature = "fast-math")
@@ -56,16 +78,6 @@ pub(crate) use norm::SQUARES_UNDERFLOW;
 pub(crate) use norm::{needs_no_rescaling, scale_for_squares, ScaledSquares};
 pub(crate) use sin_cos::sin3;
 pub use sqrt::sqrt;
-/// What the vectorizable lanes of `Quat::slerp_slice` share with the single
-/// call.
-#[cfg(all(
-    any(target_arch = "x86_64", target_arch = "aarch64"),
-    not(feature = "fast-math")
-))]
-pub(crate) use {
-    bits::select,
-    double::{atan2_of_root, sin_to_quarter_turn},
-};
 
 /// Four-quadrant arctangent of `y / x`, in [-pi, pi], with IEEE 754's
 /// results for zeros and infinities (`atan2(+-0, -0) = +-pi`,

@@ -273,8 +273,8 @@ impl RigTForm {
     /// assert_eq!(out[1], starts[1].interpolate(ends[1], 0.5));
     /// ```
     pub fn interpolate_slice(starts: &[Self], ends: &[Self], alpha: f32, out: &mut [Self]) {
-        let finish = |a: Self, b: Self, r| Self::new(a.t.lerp(b.t, alpha), r);
-        crate::quat::slerp_slice_by(starts, ends, alpha, out, |x| x.r, finish);
+        let finish = |a: &Self, b: &Self, r| Self::new(a.t.lerp(b.t, alpha), r);
+        crate::quat::slerp_slice_by(starts, ends, alpha, out, |x| &x.r, finish);
     }
 }
 

@@ -10,7 +10,7 @@ use super::sqrt::sqrt;
 /// Minimax coefficients of `(atan(u) - u) / u^3` as a polynomial in `u^2`
 /// on [0, 1], for relative error (`tools/minimax.py atan_f64`): the
 /// approximation error is 1.7e-8 of the result.
-const ATAN: [f64; 8] = [
+pub(crate) const ATAN: [f64; 8] = [
     -0.333_331_527_378_383_06,
     0.199_937_728_817_470_77,
     -0.142_110_557_110_242_54,
@@ -24,7 +24,7 @@ const ATAN: [f64; 8] = [
 /// Minimax coefficients of `(sin(x) - x) / x^3` as a polynomial in `x^2`
 /// on [0, pi/2], for relative error (`tools/minimax.py sin_f64`): the
 /// approximation error is 6.1e-9 of the result.
-const SIN: [f64; 4] = [
+pub(crate) const SIN: [f64; 4] = [
     -0.166_666_595_504_268_43,
     0.008_333_066_246_154_522,
     -0.000_198_096_029_100_214_08,

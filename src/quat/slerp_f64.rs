@@ -24,7 +24,7 @@ pub(super) const NORM_SQUARED_LIMIT: f32 = 4_294_967_296.0;
 /// 2^100: `1 / sin^2(phi)` is below 2^26 wherever the evaluation's result
 /// is used (`phi > SMALL_ANGLE`); elsewhere (in vectorized lanes, whose
 /// result is then replaced) it is clamped here, to stay finite in f32.
-const INVERSE_SINE_SQUARED_LIMIT: f64 = 1.267_650_600_228_229_4e30;
+pub(super) const INVERSE_SINE_SQUARED_LIMIT: f64 = 1.267_650_600_228_229_4e30;
 
 /// What the evaluation needs of a pair `(a, b)`: squared norms, dot
 /// product and squared wedge.
