@@ -29,7 +29,14 @@ mod rotation_arc;
 ))]
 mod slerp_f64;
 mod slerp_slice;
-pub(crate) use slerp_slice::slerp_slice_by;
+#[cfg(all(
+    target_arch = "x86_64",
+    target_feature = "avx",
+    not(kani),
+    not(feature = "fast-math")
+))]
+pub(crate) use slerp_slice::{lerp_rig_tforms, AVX_STEP};
+pub(crate) use slerp_slice::{slerp_slice_by, Slerped};
 
 pub use euler::EulerRot;
 

@@ -273,8 +273,37 @@ impl RigTForm {
     /// assert_eq!(out[1], starts[1].interpolate(ends[1], 0.5));
     /// ```
     pub fn interpolate_slice(starts: &[Self], ends: &[Self], alpha: f32, out: &mut [Self]) {
-        let finish = |a: &Self, b: &Self, r| Self::new(a.t.lerp(b.t, alpha), r);
-        crate::quat::slerp_slice_by(starts, ends, alpha, out, |x| &x.r, finish);
+        crate::quat::slerp_slice_by(starts, ends, alpha, out);
+    }
+}
+
+impl crate::quat::Slerped for RigTForm {
+    #[inline(always)]
+    fn rotation(&self) -> &Quat {
+        &self.r
+    }
+    #[inline(always)]
+    fn rotation_mut(&mut self) -> &mut Quat {
+        &mut self.r
+    }
+    #[inline(always)]
+    fn lerp_rest(start: &Self, end: &Self, alpha: f32, out: &mut Self) {
+        out.t = start.t.lerp(end.t, alpha);
+    }
+    #[cfg(all(
+        target_arch = "x86_64",
+        target_feature = "avx",
+        not(kani),
+        not(feature = "fast-math")
+    ))]
+    #[inline(always)]
+    fn lerp_rest_of(
+        starts: &[Self; crate::quat::AVX_STEP],
+        ends: &[Self; crate::quat::AVX_STEP],
+        alpha: f32,
+        out: &mut [Self; crate::quat::AVX_STEP],
+    ) {
+        crate::quat::lerp_rig_tforms(starts, ends, alpha, out);
     }
 }
 

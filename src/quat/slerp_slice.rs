@@ -51,24 +51,62 @@ impl Quat {
     /// ```
     #[doc(alias = "slerp_many")]
     pub fn slerp_slice(starts: &[Quat], ends: &[Quat], alpha: f32, out: &mut [Quat]) {
-        slerp_slice_by(starts, ends, alpha, out, |q| q, |_, _, q| q);
+        slerp_slice_by(starts, ends, alpha, out);
     }
 }
 
-/// For every pair `(starts[i], ends[i])`, `out[i] = finish(&starts[i],
-/// &ends[i], rotation(&starts[i]).slerp(*rotation(&ends[i]), alpha))`, with
-/// the slerps evaluated as [`Quat::slerp_slice`] says: the rotations of
-/// values that hold one (`RigTForm`'s), read in place, without copying
-/// them out first.
+/// What [`slerp_slice_by`] interpolates: a value that holds a rotation,
+/// slerped, and maybe more, lerped (`RigTForm`'s translation).
+pub(crate) trait Slerped: Copy {
+    /// The rotation.
+    fn rotation(&self) -> &Quat;
+    /// The rotation, to be written.
+    fn rotation_mut(&mut self) -> &mut Quat;
+    /// Writes into `out` all but the rotation of the interpolation of
+    /// `start` and `end` by `alpha`.
+    fn lerp_rest(start: &Self, end: &Self, alpha: f32, out: &mut Self);
+    /// [`lerp_rest`](Self::lerp_rest) of a step of pairs of the AVX lanes;
+    /// it may write the rotations of `out` too (they are written again
+    /// afterwards).
+    #[cfg(all(
+        target_arch = "x86_64",
+        target_feature = "avx",
+        not(kani),
+        not(feature = "fast-math")
+    ))]
+    #[inline(always)]
+    fn lerp_rest_of(
+        starts: &[Self; avx::PAIRS],
+        ends: &[Self; avx::PAIRS],
+        alpha: f32,
+        out: &mut [Self; avx::PAIRS],
+    ) {
+        for ((start, end), out) in starts.iter().zip(ends).zip(out) {
+            Self::lerp_rest(start, end, alpha, out);
+        }
+    }
+}
+
+impl Slerped for Quat {
+    #[inline(always)]
+    fn rotation(&self) -> &Quat {
+        self
+    }
+    #[inline(always)]
+    fn rotation_mut(&mut self) -> &mut Quat {
+        self
+    }
+    #[inline(always)]
+    fn lerp_rest(_: &Self, _: &Self, _: f32, _: &mut Self) {}
+}
+
+/// For every pair `(starts[i], ends[i])`, the rotation of `out[i]` is
+/// `starts[i].rotation().slerp(*ends[i].rotation(), alpha)` and the rest
+/// [`Slerped::lerp_rest`]'s, with the slerps evaluated as
+/// [`Quat::slerp_slice`] says: the rotations of values that hold one
+/// (`RigTForm`'s), read and written in place.
 #[inline(always)]
-pub(crate) fn slerp_slice_by<T: Copy>(
-    starts: &[T],
-    ends: &[T],
-    alpha: f32,
-    out: &mut [T],
-    rotation: impl Fn(&T) -> &Quat,
-    finish: impl Fn(&T, &T, Quat) -> T,
-) {
+pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, out: &mut [T]) {
     #[cfg(all(
         target_arch = "x86_64",
         target_feature = "avx",
@@ -76,7 +114,7 @@ pub(crate) fn slerp_slice_by<T: Copy>(
         not(feature = "fast-math")
     ))]
     if alpha > 0.0 && alpha <= 1.0 {
-        return avx::slerp_in_blocks(starts, ends, alpha, out, rotation, finish);
+        return avx::slerp_in_steps(starts, ends, alpha, out);
     }
     #[cfg(all(
         any(target_arch = "x86_64", target_arch = "aarch64"),
@@ -84,14 +122,15 @@ pub(crate) fn slerp_slice_by<T: Copy>(
         not(feature = "fast-math")
     ))]
     if alpha > 0.0 && alpha <= 1.0 {
-        return lanes::slerp_in_blocks(starts, ends, alpha, out, rotation, finish);
+        return lanes::slerp_in_blocks(starts, ends, alpha, out);
     }
     for ((a, b), o) in starts.iter().zip(ends).zip(out.iter_mut()) {
-        *o = finish(a, b, rotation(a).slerp(*rotation(b), alpha));
+        *o.rotation_mut() = a.rotation().slerp(*b.rotation(), alpha);
+        T::lerp_rest(a, b, alpha, o);
     }
 }
 
-/// Eight pairs at a time in AVX registers, written by hand.
+/// Sixteen pairs at a time in AVX registers, written by hand.
 #[cfg(all(
     target_arch = "x86_64",
     target_feature = "avx",
@@ -99,6 +138,13 @@ pub(crate) fn slerp_slice_by<T: Copy>(
     not(feature = "fast-math")
 ))]
 mod avx;
+#[cfg(all(
+    target_arch = "x86_64",
+    target_feature = "avx",
+    not(kani),
+    not(feature = "fast-math")
+))]
+pub(crate) use avx::{lerp_rig_tforms, PAIRS as AVX_STEP};
 
 /// The branch-free evaluation of the slice, in blocks the compiler
 /// vectorizes.

@@ -2,7 +2,7 @@
 //! vectorizes.
 
 use super::super::slerp_f64::{Pair, NORM_SQUARED_LIMIT, SMALL_ANGLE_F64};
-use super::Quat;
+use super::{Quat, Slerped};
 use crate::float::select;
 
 /// Pairs per block: the flags of a block live on the stack.
@@ -10,14 +10,7 @@ const BLOCK: usize = 64;
 
 /// [`slerp_slice_by`](super::slerp_slice_by) for `alpha` in (0, 1].
 #[inline(always)]
-pub(super) fn slerp_in_blocks<T: Copy>(
-    starts: &[T],
-    ends: &[T],
-    alpha: f32,
-    out: &mut [T],
-    rotation: impl Fn(&T) -> &Quat,
-    finish: impl Fn(&T, &T, Quat) -> T,
-) {
+pub(super) fn slerp_in_blocks<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, out: &mut [T]) {
     let blocks = starts
         .chunks(BLOCK)
         .zip(ends.chunks(BLOCK))
@@ -25,13 +18,14 @@ pub(super) fn slerp_in_blocks<T: Copy>(
     for ((starts, ends), out) in blocks {
         let mut done = [false; BLOCK];
         for (((a, b), o), d) in starts.iter().zip(ends).zip(out.iter_mut()).zip(&mut done) {
-            let (q, in_plane_done) = in_plane(*rotation(a), *rotation(b), alpha);
-            (*o, *d) = (finish(a, b, q), in_plane_done);
+            let (q, in_plane_done) = in_plane(*a.rotation(), *b.rotation(), alpha);
+            (*o.rotation_mut(), *d) = (q, in_plane_done);
+            T::lerp_rest(a, b, alpha, o);
         }
         let rest = starts.iter().zip(ends).zip(out.iter_mut()).zip(&done);
         for (((a, b), o), &d) in rest {
             if !d {
-                *o = finish(a, b, rotation(a).slerp(*rotation(b), alpha));
+                *o.rotation_mut() = a.rotation().slerp(*b.rotation(), alpha);
             }
         }
     }
