@@ -118,6 +118,8 @@ fn step<T: Slerped>(s: &[T; PAIRS], e: &[T; PAIRS], alpha: f32, o: &mut [T; PAIR
 /// 1, 3, 5, 7 (plus `8j`), which is the order the transpose by unpacking
 /// within 128-bit halves gives; the low half of its f32 registers (pairs
 /// 0, 2, 4, 6) goes to f64 register `2j`, the high half to `2j + 1`.
+///
+/// One of the crate's six `unsafe` blocks.
 #[allow(unsafe_code)]
 #[inline(always)]
 fn evaluate<T: Slerped>(s: &[T; PAIRS], e: &[T; PAIRS], alpha: f32, o: &mut [T; PAIRS]) -> u32 {
@@ -335,7 +337,8 @@ fn evaluate<T: Slerped>(s: &[T; PAIRS], e: &[T; PAIRS], alpha: f32, o: &mut [T; 
 /// `out[i].t = starts[i].t.lerp(ends[i].t, alpha)` for [`PAIRS`]
 /// RigTForms at once: every one of their f32 components (rotations too,
 /// which are written again afterwards) as `x (1 - alpha) + y alpha`, the
-/// operations of `Cvec3::lerp`, eight at a time.
+/// operations of `Cvec3::lerp`, eight at a time. One of the crate's six
+/// `unsafe` blocks.
 #[allow(unsafe_code)]
 #[inline(always)]
 pub(crate) fn lerp_rig_tforms(
