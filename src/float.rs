@@ -50,7 +50,10 @@ mod sweep;
 /// What the portable lanes of `Quat::slerp_slice` use besides.
 #[cfg(all(
     any(target_arch = "x86_64", target_arch = "aarch64"),
-    not(all(target_arch = "x86_64", target_feature = "avx", not(kani))),
+    any(
+        test,
+        not(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))
+    ),
     not(feature = "fast-math")
 ))]
 pub(crate) use bits::select;
@@ -62,10 +65,10 @@ pub(crate) use bits::SIGN;
     not(feature = "fast-math")
 ))]
 pub(crate) use double::{atan2_of_root, sin_to_quarter_turn};
-/// The coefficients the AVX lanes of `Quat::slerp_slice` evaluate.
+/// The coefficients the x86-64 lanes of `Quat::slerp_slice` evaluate.
 #[cfg(all(
     target_arch = "x86_64",
-    target_feature = "avx",
+    target_feature = "sse2",
     not(kani),
     not(feature = "fast-math")
 ))]

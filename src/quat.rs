@@ -31,11 +31,11 @@ mod slerp_f64;
 mod slerp_slice;
 #[cfg(all(
     target_arch = "x86_64",
-    target_feature = "avx",
+    target_feature = "sse2",
     not(kani),
     not(feature = "fast-math")
 ))]
-pub(crate) use slerp_slice::{lerp_rig_tforms, AVX_STEP};
+pub(crate) use slerp_slice::lerp_rig_tforms;
 pub(crate) use slerp_slice::{slerp_slice_by, Slerped};
 
 pub use euler::EulerRot;

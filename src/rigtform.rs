@@ -293,17 +293,12 @@ impl crate::quat::Slerped for RigTForm {
     }
     #[cfg(all(
         target_arch = "x86_64",
-        target_feature = "avx",
+        target_feature = "sse2",
         not(kani),
         not(feature = "fast-math")
     ))]
     #[inline(always)]
-    fn lerp_rest_of(
-        starts: &[Self; crate::quat::AVX_STEP],
-        ends: &[Self; crate::quat::AVX_STEP],
-        alpha: f32,
-        out: &mut [Self; crate::quat::AVX_STEP],
-    ) {
+    fn lerp_rest_of(starts: &[Self], ends: &[Self], alpha: f32, out: &mut [Self]) {
         crate::quat::lerp_rig_tforms(starts, ends, alpha, out);
     }
 }

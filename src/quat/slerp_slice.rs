@@ -75,21 +75,17 @@ pub(crate) trait Slerped: Copy {
     /// Writes into `out` all but the rotation of the interpolation of
     /// `start` and `end` by `alpha`.
     fn lerp_rest(start: &Self, end: &Self, alpha: f32, out: &mut Self);
-    /// [`lerp_rest`](Self::lerp_rest) of a step of pairs of the AVX lanes;
-    /// it may write the rotations of `out` too (they are written again
-    /// afterwards).
+    /// [`lerp_rest`](Self::lerp_rest) of every pair of the slices (the
+    /// first `min(starts.len(), ends.len(), out.len())`) at once, for the
+    /// steps of the x86-64 lanes; it may write the rotations of `out` too
+    /// (they are written again afterwards).
     #[cfg(all(
         target_arch = "x86_64",
-        target_feature = "avx",
+        target_feature = "sse2",
         not(kani),
         not(feature = "fast-math")
     ))]
-    fn lerp_rest_of(
-        starts: &[Self; avx::PAIRS],
-        ends: &[Self; avx::PAIRS],
-        alpha: f32,
-        out: &mut [Self; avx::PAIRS],
-    );
+    fn lerp_rest_of(starts: &[Self], ends: &[Self], alpha: f32, out: &mut [Self]);
 }
 
 impl Slerped for Quat {
@@ -105,18 +101,12 @@ impl Slerped for Quat {
     fn lerp_rest(_: &Self, _: &Self, _: f32, _: &mut Self) {}
     #[cfg(all(
         target_arch = "x86_64",
-        target_feature = "avx",
+        target_feature = "sse2",
         not(kani),
         not(feature = "fast-math")
     ))]
     #[inline(always)]
-    fn lerp_rest_of(
-        _: &[Self; avx::PAIRS],
-        _: &[Self; avx::PAIRS],
-        _: f32,
-        _: &mut [Self; avx::PAIRS],
-    ) {
-    }
+    fn lerp_rest_of(_: &[Self], _: &[Self], _: f32, _: &mut [Self]) {}
 }
 
 /// For every pair `(starts[i], ends[i])`, the rotation of `out[i]` is
@@ -133,11 +123,21 @@ pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, o
         not(feature = "fast-math")
     ))]
     if alpha > 0.0 && alpha <= 1.0 {
-        return avx::slerp_in_steps(starts, ends, alpha, out);
+        return steps::slerp_in_steps::<avx::Avx, T, 2, 4, 16>(starts, ends, alpha, out);
+    }
+    #[cfg(all(
+        target_arch = "x86_64",
+        target_feature = "sse2",
+        not(target_feature = "avx"),
+        not(kani),
+        not(feature = "fast-math")
+    ))]
+    if alpha > 0.0 && alpha <= 1.0 {
+        return steps::slerp_in_steps::<sse2::Sse2, T, 4, 8, 16>(starts, ends, alpha, out);
     }
     #[cfg(all(
         any(target_arch = "x86_64", target_arch = "aarch64"),
-        not(all(target_arch = "x86_64", target_feature = "avx", not(kani))),
+        not(all(target_arch = "x86_64", target_feature = "sse2", not(kani))),
         not(feature = "fast-math")
     ))]
     if alpha > 0.0 && alpha <= 1.0 {
@@ -149,7 +149,24 @@ pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, o
     }
 }
 
-/// Sixteen pairs at a time in AVX registers, written by hand.
+/// Steps of pairs in the vector registers of x86-64, through the
+/// operations of an instruction set, written by hand.
+#[cfg(all(
+    target_arch = "x86_64",
+    target_feature = "sse2",
+    not(kani),
+    not(feature = "fast-math")
+))]
+mod steps;
+#[cfg(all(
+    target_arch = "x86_64",
+    target_feature = "sse2",
+    not(kani),
+    not(feature = "fast-math")
+))]
+pub(crate) use steps::lerp_rig_tforms;
+
+/// The operations of AVX: sixteen pairs a step.
 #[cfg(all(
     target_arch = "x86_64",
     target_feature = "avx",
@@ -157,19 +174,26 @@ pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, o
     not(feature = "fast-math")
 ))]
 mod avx;
+
+/// The operations of SSE2: sixteen pairs a step (also compiled for the
+/// tests of AVX builds, which check both).
 #[cfg(all(
     target_arch = "x86_64",
-    target_feature = "avx",
+    target_feature = "sse2",
+    any(test, not(target_feature = "avx")),
     not(kani),
     not(feature = "fast-math")
 ))]
-pub(crate) use avx::{lerp_rig_tforms, PAIRS as AVX_STEP};
+mod sse2;
 
 /// The branch-free evaluation of the slice, in blocks the compiler
-/// vectorizes.
+/// vectorizes (also compiled for the tests on x86-64, which check it).
 #[cfg(all(
     any(target_arch = "x86_64", target_arch = "aarch64"),
-    not(all(target_arch = "x86_64", target_feature = "avx", not(kani))),
+    any(
+        test,
+        not(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))
+    ),
     not(feature = "fast-math")
 ))]
 mod lanes;

@@ -1,0 +1,523 @@
+//! The slice on x86-64: steps of pairs in vector registers, through an
+//! instruction set's operations written by hand ([`Isa`]: SSE2 on every
+//! x86-64 target with SSE, AVX where it is enabled at compile time).
+//!
+//! The pairs go through the operations of `Quat::slerp_f64`'s evaluation
+//! ([`Pair::of`], [`Pair::applies`], `atan2_of_root`, [`Pair::slerp`] and
+//! `sin_to_quarter_turn`), the same ones in the same order: the f32 part in
+//! registers of [`Isa::LANES`] lanes, the f64 part in registers of half as
+//! many. No fused multiply-add is used (it rounds once where the single
+//! call rounds twice), so every lane's result is the single call's, bit for
+//! bit; the unit tests below check it against `slerp_f64` on random pairs
+//! and on each class of pair it leaves to the f32 evaluation, in every
+//! lane. Lanes whose pair that evaluation does not take are done again by
+//! `slerp`, as in the portable lanes.
+//!
+//! The evaluation of one pair is a long chain of dependent operations (two
+//! divisions and two square roots among them), longer than the processor
+//! can look ahead past; several blocks of [`Isa::LANES`] pairs go through
+//! it together, stage by stage, so that while one block's lanes wait for a
+//! result the others' have work. The compiler vectorizes the portable lanes
+//! too, but one block at a time, and it moves the quaternions between their
+//! layout (`w, x, y, z` of one, then the next) and one register per
+//! component with about three times the shuffles of the transposes here.
+//! Medians of one process, 1,024 random unit pairs, on an AMD EPYC (Zen 3),
+//! `-C target-cpu=x86-64-v3`: 4.9 ns per pair here against 8.7 for the
+//! portable lanes (`slerp_slice`), 5.7 against 9.3
+//! (`RigTForm::interpolate_slice`).
+//!
+//! [`Pair::of`]: super::super::slerp_f64::Pair::of
+//! [`Pair::applies`]: super::super::slerp_f64::Pair::applies
+//! [`Pair::slerp`]: super::super::slerp_f64::Pair::slerp
+
+use super::super::interpolate::NEARLY_UNIT;
+use super::super::slerp_f64::{INVERSE_SINE_SQUARED_LIMIT, NORM_SQUARED_LIMIT, SMALL_ANGLE_F64};
+use super::Slerped;
+use crate::float::{ATAN_F64, SIN_F64, SQUARES_UNDERFLOW};
+use crate::RigTForm;
+
+/// An instruction set's registers and the operations the evaluation
+/// takes, each one instruction (or a fixed few), IEEE 754's operation on
+/// every lane.
+pub(super) trait Isa {
+    /// A register of f32 lanes.
+    type F: Copy;
+    /// A register of f64 lanes, half as many.
+    type D: Copy;
+    /// f32 lanes per register: pairs per block.
+    const LANES: usize;
+    /// The pair of its block that each lane holds, after [`load`](Self::load).
+    const PAIR_OF_LANE: [usize; 8];
+
+    /// `x` in every f32 lane.
+    fn splat(x: f32) -> Self::F;
+    /// `x` in every f64 lane.
+    fn splat_d(x: f64) -> Self::D;
+    /// `a + b`.
+    fn add(a: Self::F, b: Self::F) -> Self::F;
+    /// `a - b`.
+    fn sub(a: Self::F, b: Self::F) -> Self::F;
+    /// `a * b`.
+    fn mul(a: Self::F, b: Self::F) -> Self::F;
+    /// Bitwise `a & b`.
+    fn and(a: Self::F, b: Self::F) -> Self::F;
+    /// Bitwise `!a & b`.
+    fn and_not(a: Self::F, b: Self::F) -> Self::F;
+    /// Bitwise `a | b`.
+    fn or(a: Self::F, b: Self::F) -> Self::F;
+    /// All ones where `a <= b`, else zeros (false for NaN).
+    fn le(a: Self::F, b: Self::F) -> Self::F;
+    /// All ones where `!(a > b)`, else zeros (true for NaN).
+    fn not_gt(a: Self::F, b: Self::F) -> Self::F;
+    /// All ones where `a >= b`, else zeros (false for NaN).
+    fn ge(a: Self::F, b: Self::F) -> Self::F;
+    /// The sign bits of the lanes, lane `k` in bit `k`.
+    fn bits(a: Self::F) -> u32;
+    /// `a + b` in f64.
+    fn add_d(a: Self::D, b: Self::D) -> Self::D;
+    /// `a - b` in f64.
+    fn sub_d(a: Self::D, b: Self::D) -> Self::D;
+    /// `a * b` in f64.
+    fn mul_d(a: Self::D, b: Self::D) -> Self::D;
+    /// `a / b` in f64.
+    fn div_d(a: Self::D, b: Self::D) -> Self::D;
+    /// `if a < b { a } else { b }` in f64.
+    fn min_d(a: Self::D, b: Self::D) -> Self::D;
+    /// Bitwise `a & b` in f64 lanes.
+    fn and_d(a: Self::D, b: Self::D) -> Self::D;
+    /// Bitwise `a | b` in f64 lanes.
+    fn or_d(a: Self::D, b: Self::D) -> Self::D;
+    /// Bitwise `a ^ b` in f64 lanes.
+    fn xor_d(a: Self::D, b: Self::D) -> Self::D;
+    /// All ones where `a < b`, else zeros.
+    fn lt_d(a: Self::D, b: Self::D) -> Self::D;
+    /// All ones where `a > b`, else zeros.
+    fn gt_d(a: Self::D, b: Self::D) -> Self::D;
+    /// `yes` where `mask` (all ones or all zeros per lane) is set, else `no`.
+    fn select_d(mask: Self::D, yes: Self::D, no: Self::D) -> Self::D;
+    /// The sign bits of the f64 lanes, lane `k` in bit `k`.
+    fn bits_d(a: Self::D) -> u32;
+    /// The low and the high half of the f32 lanes, each widened to f64.
+    fn halves(a: Self::F) -> [Self::D; 2];
+    /// Two registers of f64 lanes rounded to f32, the first the low half.
+    fn join(low: Self::D, high: Self::D) -> Self::F;
+    /// The f32 square root of every lane, rounded to f32 first and widened
+    /// back: `f64::from(sqrt(x as f32))`.
+    fn root(a: Self::D) -> Self::D;
+    /// The rotations of [`LANES`](Self::LANES) values, one register per
+    /// component (`w`, `x`, `y`, `z`), lanes in the order
+    /// [`PAIR_OF_LANE`](Self::PAIR_OF_LANE) gives.
+    fn load<T: Slerped>(values: &[T]) -> [Self::F; 4];
+    /// The inverse of [`load`](Self::load): the quaternions in the four
+    /// component registers to the rotations of `values`.
+    fn store<T: Slerped>(components: [Self::F; 4], values: &mut [T]);
+}
+
+/// [`slerp_slice_by`](super::slerp_slice_by) for `alpha` in (0, 1]: steps
+/// of `PAIRS` pairs (`BLOCKS` blocks of `I::LANES`, with `CHAINS = 2
+/// BLOCKS` registers of f64 lanes), and the last pairs (fewer) in a step
+/// of their own, padded with copies of the first of them.
+#[inline(always)]
+pub(super) fn slerp_in_steps<
+    I: Isa,
+    T: Slerped,
+    const BLOCKS: usize,
+    const CHAINS: usize,
+    const PAIRS: usize,
+>(
+    starts: &[T],
+    ends: &[T],
+    alpha: f32,
+    out: &mut [T],
+) {
+    const { assert!(CHAINS == 2 * BLOCKS && PAIRS == I::LANES * BLOCKS && PAIRS < 32) };
+    let steps = starts
+        .chunks_exact(PAIRS)
+        .zip(ends.chunks_exact(PAIRS))
+        .zip(out.chunks_exact_mut(PAIRS));
+    let mut whole = 0;
+    for ((s, e), o) in steps {
+        let (Ok(s), Ok(e), Ok(o)) = (
+            <&[T; PAIRS]>::try_from(s),
+            <&[T; PAIRS]>::try_from(e),
+            <&mut [T; PAIRS]>::try_from(o),
+        ) else {
+            break;
+        };
+        step::<I, T, BLOCKS, CHAINS, PAIRS>(s, e, alpha, o);
+        whole += PAIRS;
+    }
+    let left = starts
+        .len()
+        .min(ends.len())
+        .min(out.len())
+        .saturating_sub(whole);
+    if let (Some(&s0), Some(&e0), true) = (starts.get(whole), ends.get(whole), left > 0) {
+        let (mut s, mut e, mut o) = ([s0; PAIRS], [e0; PAIRS], [s0; PAIRS]);
+        let pairs = starts.iter().zip(ends).skip(whole);
+        for ((a, b), (s, e)) in pairs.zip(s.iter_mut().zip(e.iter_mut())) {
+            (*s, *e) = (*a, *b);
+        }
+        step::<I, T, BLOCKS, CHAINS, PAIRS>(&s, &e, alpha, &mut o);
+        for (to, from) in out.iter_mut().skip(whole).take(left).zip(&o) {
+            *to = *from;
+        }
+    }
+}
+
+/// One step of `I::LANES * BLOCKS` pairs: [`Slerped::lerp_rest_of`] them,
+/// then their rotations by [`evaluate`], and `slerp` for the pairs it
+/// leaves.
+#[inline(always)]
+fn step<I: Isa, T: Slerped, const BLOCKS: usize, const CHAINS: usize, const PAIRS: usize>(
+    s: &[T; PAIRS],
+    e: &[T; PAIRS],
+    alpha: f32,
+    o: &mut [T; PAIRS],
+) {
+    T::lerp_rest_of(s, e, alpha, o);
+    let done = evaluate::<I, T, BLOCKS, CHAINS, PAIRS>(s, e, alpha, o);
+    if done != (1 << PAIRS) - 1 {
+        let rest = s.iter().zip(e).zip(o.iter_mut()).enumerate();
+        for (i, ((s, e), o)) in rest {
+            if done & (1 << i) == 0 {
+                *o.rotation_mut() = s.rotation().slerp(*e.rotation(), alpha);
+            }
+        }
+    }
+}
+
+/// `slerp_f64`'s evaluation of the rotations of the pairs of a step
+/// (`I::LANES * BLOCKS` of them), without a branch, written to the
+/// rotations of `o`; returned, a bit for each pair (bit `i` for pair `i`)
+/// set where that result is `slerp`'s (where it is not, the value is some
+/// quaternion, NaN or infinite components possible, to be replaced).
+///
+/// Block `j` holds pairs `LANES j` to `LANES (j + 1) - 1`; the low half of
+/// its f32 registers goes to f64 register `2j`, the high half to `2j + 1`.
+#[inline(always)]
+fn evaluate<I: Isa, T: Slerped, const BLOCKS: usize, const CHAINS: usize, const PAIRS: usize>(
+    s: &[T; PAIRS],
+    e: &[T; PAIRS],
+    alpha: f32,
+    o: &mut [T; PAIRS],
+) -> u32 {
+    let (add, sub, mul) = (I::add, I::sub, I::mul);
+    let (add_d, sub_d, mul_d, div_d) = (I::add_d, I::sub_d, I::mul_d, I::div_d);
+    let splat = I::splat_d;
+    let (sign32, sign64) = (I::splat(-0.0), splat(-0.0));
+    let dot = |p: [I::F; 4], q: [I::F; 4]| {
+        add(
+            add(add(mul(p[0], q[0]), mul(p[1], q[1])), mul(p[2], q[2])),
+            mul(p[3], q[3]),
+        )
+    };
+    let minor = |p, q, r, s| sub(mul(p, s), mul(q, r));
+    let sq = |x| mul(x, x);
+
+    // Pair::of and Pair::applies, block by block: the squared norms, the
+    // dot product, the six minors and the squared wedge; the bounds on the
+    // squared norms are checked once (slerp_f64 checks them twice, with
+    // the same result).
+    let zero = I::splat(0.0);
+    let (mut a, mut b) = ([[zero; 4]; BLOCKS], [[zero; 4]; BLOCKS]);
+    let (mut dots, mut wedges, mut applies) = ([zero; BLOCKS], [zero; BLOCKS], [0; BLOCKS]);
+    let lanes = |j: usize| I::LANES * j..I::LANES * (j + 1);
+    for j in 0..BLOCKS {
+        let ([aw, ax, ay, az], [bw, bx, by, bz]) = (I::load(&s[lanes(j)]), I::load(&e[lanes(j)]));
+        let n2 = dot([aw, ax, ay, az], [aw, ax, ay, az]);
+        let on2 = dot([bw, bx, by, bz], [bw, bx, by, bz]);
+        let m = [
+            minor(aw, ax, bw, bx),
+            minor(aw, ay, bw, by),
+            minor(aw, az, bw, bz),
+            minor(ax, ay, bx, by),
+            minor(ax, az, bx, bz),
+            minor(ay, az, by, bz),
+        ];
+        let wedge = add(
+            add(add(sq(m[0]), sq(m[1])), add(sq(m[2]), sq(m[3]))),
+            add(sq(m[4]), sq(m[5])),
+        );
+        let limit = I::splat(NORM_SQUARED_LIMIT);
+        let bounded = I::and(I::le(n2, limit), I::le(on2, limit));
+        let spread = I::and_not(sign32, sub(n2, on2));
+        // `!(spread > NEARLY_UNIT * on2)`: "not greater", true for NaN.
+        let near_unit = I::not_gt(spread, mul(I::splat(NEARLY_UNIT), on2));
+        let resolved = I::ge(wedge, I::splat(SQUARES_UNDERFLOW));
+        applies[j] = I::bits(I::and(I::and(bounded, near_unit), resolved));
+        (a[j], b[j]) = ([aw, ax, ay, az], [bw, bx, by, bz]);
+        (dots[j], wedges[j]) = (dot([aw, ax, ay, az], [bw, bx, by, bz]), wedge);
+    }
+    // Where the evaluation does not apply, the squared wedge may be zero
+    // and the divisions below make infinities or NaN in that lane (the
+    // processor does not trap: exceptions are masked), whose value is
+    // replaced. Putting a positive wedge there first would add a select
+    // to every lane's chain of dependent operations.
+
+    // The f64 part, register by register at each stage: w, x and x * x (of
+    // |x| in atan2_of_root and of x in Pair::slerp: the same).
+    let zero = splat(0.0);
+    let (mut w, mut x2) = ([zero; CHAINS], [zero; CHAINS]);
+    for j in 0..BLOCKS {
+        let (wedge, dot) = (I::halves(wedges[j]), I::halves(dots[j]));
+        for h in 0..2 {
+            (w[2 * j + h], x2[2 * j + h]) = (wedge[h], mul_d(dot[h], dot[h]));
+        }
+    }
+    // atan2_of_root(w, |x|): the smaller of w and x^2 over the larger, its
+    // square root in f32 (each register on its own, so that none waits for
+    // another's division), the polynomial, the quarter turn.
+    let mut z = [zero; CHAINS];
+    for k in 0..CHAINS {
+        let below = I::lt_d(w[k], x2[k]);
+        z[k] = div_d(
+            I::select_d(below, w[k], x2[k]),
+            I::select_d(below, x2[k], w[k]),
+        );
+    }
+    let mut phi = [zero; CHAINS];
+    for k in 0..CHAINS {
+        let (z, u) = (z[k], I::root(z[k]));
+        let c = ATAN_F64;
+        let z2 = mul_d(z, z);
+        let z4 = mul_d(z2, z2);
+        let low = add_d(
+            add_d(splat(c[0]), mul_d(z, splat(c[1]))),
+            mul_d(z2, add_d(splat(c[2]), mul_d(z, splat(c[3])))),
+        );
+        let high = add_d(
+            add_d(splat(c[4]), mul_d(z, splat(c[5]))),
+            mul_d(z2, add_d(splat(c[6]), mul_d(z, splat(c[7])))),
+        );
+        let p = add_d(low, mul_d(z4, high));
+        let a = add_d(u, mul_d(u, mul_d(z, p)));
+        let d = sub_d(x2[k], w[k]);
+        let half = splat(0.5);
+        let quarter = sub_d(half, I::or_d(half, I::and_d(d, sign64)));
+        let flipped = I::xor_d(a, I::and_d(d, sign64));
+        phi[k] = add_d(mul_d(quarter, splat(core::f64::consts::FRAC_PI_2)), flipped);
+    }
+    // Pair::slerp: r = 1 / sin(phi) from the wedge and the dot product (its
+    // square root in f32), the two sines.
+    let mut r = [zero; CHAINS];
+    for k in 0..CHAINS {
+        let limit = splat(INVERSE_SINE_SQUARED_LIMIT);
+        r[k] = I::root(I::min_d(div_d(add_d(w[k], x2[k]), w[k]), limit));
+    }
+    let sine = |x| {
+        let s = SIN_F64;
+        let s2 = mul_d(x, x);
+        let p = add_d(
+            add_d(splat(s[0]), mul_d(s2, splat(s[1]))),
+            mul_d(mul_d(s2, s2), add_d(splat(s[2]), mul_d(s2, splat(s[3])))),
+        );
+        add_d(x, mul_d(mul_d(x, s2), p))
+    };
+    let alpha = splat(f64::from(alpha));
+    let rest = sub_d(splat(1.0), alpha);
+    let (mut c0, mut c1) = ([zero; CHAINS], [zero; CHAINS]);
+    for k in 0..CHAINS {
+        c0[k] = mul_d(sine(mul_d(rest, phi[k])), r[k]);
+        c1[k] = mul_d(sine(mul_d(alpha, phi[k])), r[k]);
+    }
+
+    // The weighted sums, to the rotations of `o`; the done bits.
+    let mut done = 0;
+    let small = splat(SMALL_ANGLE_F64);
+    let half = I::LANES / 2;
+    for j in 0..BLOCKS {
+        let c0 = I::join(c0[2 * j], c0[2 * j + 1]);
+        let c1 = I::join(c1[2 * j], c1[2 * j + 1]);
+        // (c1 as f32).copysign(dot)
+        let c1 = I::or(I::and_not(sign32, c1), I::and(sign32, dots[j]));
+        let weigh = |i: usize| add(mul(c0, a[j][i]), mul(c1, b[j][i]));
+        I::store([weigh(0), weigh(1), weigh(2), weigh(3)], &mut o[lanes(j)]);
+        let past_small = I::bits_d(I::gt_d(phi[2 * j], small))
+            | (I::bits_d(I::gt_d(phi[2 * j + 1], small)) << half);
+        let lanes_done = applies[j] & past_small;
+        for (lane, pair) in I::PAIR_OF_LANE.into_iter().enumerate().take(I::LANES) {
+            done |= ((lanes_done >> lane) & 1) << (I::LANES * j + pair);
+        }
+    }
+    done
+}
+
+/// `out[i].t = starts[i].t.lerp(ends[i].t, alpha)` for many RigTForms at
+/// once: every one of their f32 components (rotations too, which are
+/// written again afterwards) as `x (1 - alpha) + y alpha`, the operations
+/// of `Cvec3::lerp`, in a loop the compiler vectorizes. One of the crate's
+/// `unsafe` blocks: the arrays of RigTForms seen as arrays of f32.
+#[allow(unsafe_code)]
+#[inline(always)]
+pub(crate) fn lerp_rig_tforms(
+    starts: &[RigTForm],
+    ends: &[RigTForm],
+    alpha: f32,
+    out: &mut [RigTForm],
+) {
+    /// The f32 components of a RigTForm.
+    const FLOATS: usize = 7;
+    const { assert!(core::mem::size_of::<RigTForm>() == 4 * FLOATS) };
+    const { assert!(core::mem::align_of::<RigTForm>() == 4) };
+    let n = starts.len().min(ends.len()).min(out.len());
+    // SAFETY: `RigTForm` is `repr(C)` of a `Cvec3` and a `Quat`, each
+    // `repr(C)` of f32s: `FLOATS` f32 with no padding and the alignment of
+    // f32 (checked above, at compile time), every bit pattern of which is
+    // a valid value, so `n` of them, which each slice has, are `n FLOATS`
+    // f32. The views borrow the slices as they are borrowed here (`out`
+    // mutably, and only through its view while that is alive).
+    let (x, y, to) = unsafe {
+        (
+            core::slice::from_raw_parts(starts.as_ptr().cast::<f32>(), n * FLOATS),
+            core::slice::from_raw_parts(ends.as_ptr().cast::<f32>(), n * FLOATS),
+            core::slice::from_raw_parts_mut(out.as_mut_ptr().cast::<f32>(), n * FLOATS),
+        )
+    };
+    for ((to, x), y) in to.iter_mut().zip(x).zip(y) {
+        *to = x * (1.0 - alpha) + y * alpha;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::super::slerp_f64::tests::{just_past_the_small_angles, rare_pairs, unit};
+    use super::super::sse2::Sse2;
+    use super::*;
+    use crate::{Cvec3, Quat};
+    use rand::{Rng, SeedableRng};
+
+    fn bits(q: Quat) -> [u32; 4] {
+        q.to_array().map(f32::to_bits)
+    }
+
+    /// A pair is done exactly where `slerp_f64` takes it, with its result,
+    /// bit for bit, in whichever lane of a step it is: random unit pairs,
+    /// and each class of input it leaves to the f32 evaluation, every one
+    /// in every lane among random pairs.
+    fn lanes_take_exactly_the_pairs_slerp_f64_takes<
+        I: Isa,
+        const BLOCKS: usize,
+        const CHAINS: usize,
+        const PAIRS: usize,
+    >() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(15);
+        let mut specials = std::vec::Vec::from(rare_pairs());
+        specials.push(just_past_the_small_angles());
+        let mut steps: std::vec::Vec<[(Quat, Quat); PAIRS]> = (0..1_000)
+            .map(|_| core::array::from_fn(|_| (unit(&mut rng), unit(&mut rng))))
+            .collect();
+        for &special in &specials {
+            for lane in 0..PAIRS {
+                let mut step: [(Quat, Quat); PAIRS] =
+                    core::array::from_fn(|_| (unit(&mut rng), unit(&mut rng)));
+                step[lane] = special;
+                steps.push(step);
+            }
+        }
+        let (mut done_count, mut left_count) = (0, 0);
+        for step in &steps {
+            let alpha = rng.random_range(0.0..=1.0f32).max(f32::MIN_POSITIVE);
+            let (s, e) = (step.map(|p| p.0), step.map(|p| p.1));
+            let mut o = [Quat::NAN; PAIRS];
+            let done = evaluate::<I, Quat, BLOCKS, CHAINS, PAIRS>(&s, &e, alpha, &mut o);
+            for (i, &(a, b)) in step.iter().enumerate() {
+                let expected = a.slerp_f64(b, alpha);
+                assert_eq!(done & (1 << i) != 0, expected.is_some(), "{a:?} {b:?}");
+                match expected {
+                    Some(q) => {
+                        assert_eq!(bits(o[i]), bits(q), "{a:?} {b:?} {alpha}");
+                        done_count += 1;
+                    }
+                    None => left_count += 1,
+                }
+            }
+        }
+        // Every pair but the eight rare ones, each in each lane.
+        assert_eq!(left_count, 8 * PAIRS);
+        assert_eq!(done_count, steps.len() * PAIRS - left_count);
+    }
+
+    #[test]
+    fn sse2_lanes_take_exactly_the_pairs_slerp_f64_takes() {
+        lanes_take_exactly_the_pairs_slerp_f64_takes::<Sse2, 4, 8, 16>();
+    }
+
+    #[cfg(target_feature = "avx")]
+    #[test]
+    fn avx_lanes_take_exactly_the_pairs_slerp_f64_takes() {
+        lanes_take_exactly_the_pairs_slerp_f64_takes::<super::super::avx::Avx, 2, 4, 16>();
+    }
+
+    /// Steps, the pairs left to `slerp` in them, and the last pairs, of
+    /// slices of every length up to three steps and a bit, of quaternions
+    /// and of RigTForms: each element the single call's result, bit for
+    /// bit, and the rest of a longer `out` untouched.
+    fn slices_of_every_length_are_the_single_calls<
+        I: Isa,
+        const BLOCKS: usize,
+        const CHAINS: usize,
+        const PAIRS: usize,
+    >() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(16);
+        let rare = rare_pairs();
+        let pairs: std::vec::Vec<(Quat, Quat)> = (0..3 * PAIRS + 5)
+            .map(|i| match i % 5 {
+                3 => rare[i % rare.len()],
+                _ => (unit(&mut rng), unit(&mut rng)),
+            })
+            .collect();
+        let (starts, ends): (std::vec::Vec<Quat>, std::vec::Vec<Quat>) =
+            pairs.iter().copied().unzip();
+        let mut shift = || {
+            let mut c = || rng.random_range(-10.0..10.0f32);
+            Cvec3::new(c(), c(), c())
+        };
+        let rig = |q: &[Quat], shift: &mut dyn FnMut() -> Cvec3| -> std::vec::Vec<RigTForm> {
+            q.iter().map(|&r| RigTForm::new(shift(), r)).collect()
+        };
+        let (rig_starts, rig_ends) = (rig(&starts, &mut shift), rig(&ends, &mut shift));
+        let same = |p: Quat, q: Quat| bits(p) == bits(q) || (p.is_nan() && q.is_nan());
+        for len in 0..=pairs.len() {
+            let mut out = std::vec![Quat::IDENTITY; len + 1];
+            slerp_in_steps::<I, Quat, BLOCKS, CHAINS, PAIRS>(
+                &starts[..len],
+                &ends[..len],
+                0.3,
+                &mut out,
+            );
+            for (i, &q) in out[..len].iter().enumerate() {
+                let expected = starts[i].slerp(ends[i], 0.3);
+                assert!(same(q, expected), "{len} {i}: {q:?} {expected:?}");
+            }
+            assert_eq!(out[len], Quat::IDENTITY);
+            let mut out = std::vec![RigTForm::IDENTITY; len + 1];
+            slerp_in_steps::<I, RigTForm, BLOCKS, CHAINS, PAIRS>(
+                &rig_starts[..len],
+                &rig_ends[..len],
+                0.3,
+                &mut out,
+            );
+            for (i, x) in out[..len].iter().enumerate() {
+                let expected = rig_starts[i].interpolate(rig_ends[i], 0.3);
+                assert!(same(x.r, expected.r), "{len} {i}: {x:?} {expected:?}");
+                assert_eq!(
+                    x.t.to_array().map(f32::to_bits),
+                    expected.t.to_array().map(f32::to_bits)
+                );
+            }
+            assert_eq!(out[len], RigTForm::IDENTITY);
+        }
+    }
+
+    #[test]
+    fn sse2_slices_of_every_length_are_the_single_calls_bit_for_bit() {
+        slices_of_every_length_are_the_single_calls::<Sse2, 4, 8, 16>();
+    }
+
+    #[cfg(target_feature = "avx")]
+    #[test]
+    fn avx_slices_of_every_length_are_the_single_calls_bit_for_bit() {
+        slices_of_every_length_are_the_single_calls::<super::super::avx::Avx, 2, 4, 16>();
+    }
+}
