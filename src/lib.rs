@@ -3,7 +3,7 @@
 //! panics, one required dependency (`libm`), and no `unsafe` code but
 //! for the processor's square root instruction (on Arm hard-float targets,
 //! x86-64 and AArch64) and, on x86-64, the quaternion product in SSE
-//! registers and, where AVX is enabled, the slice APIs' lanes.
+//! registers and the slice APIs' vector lanes.
 //!
 //! It implements the quaternion lecture notes of CS175 (Gortler,
 //! *Foundations of 3D Computer Graphics*, chapters 7 and 8): [`Quat`] with
@@ -92,10 +92,11 @@
 // `vsqrt.f32` (`fpu_sqrt`) on Arm hard-float targets, `sqrtss` and `fsqrt`
 // (`vector_unit_sqrt`) on x86-64 with SSE and AArch64 with NEON; and on
 // x86-64 with SSE the quaternion product in SSE registers
-// (`product::by_lanes` in src/quat/product.rs), and with AVX the slice
-// APIs' lanes (`evaluate` and `lerp_rig_tforms` in
-// src/quat/slerp_slice/avx.rs). There the lint is `deny` and those
-// functions allow it; elsewhere it is `forbid`.
+// (`product::by_lanes` in src/quat/product.rs) and the slice APIs' vector
+// lanes (the `Isa` implementations of src/quat/slerp_slice/sse2.rs and,
+// with AVX, avx.rs: one intrinsic per operation; and `lerp_rig_tforms` in
+// src/quat/slerp_slice/steps.rs, which sees RigTForms as f32s). There the
+// lint is `deny` and those items allow it; elsewhere it is `forbid`.
 // With the `bytemuck` feature, bytemuck's derive macros write `unsafe impl
 // Pod` and `Zeroable` for the plain-f32 types after checking them (`repr(C)`,
 // no padding, `Pod` fields); the lint does not fire on that generated code

@@ -247,8 +247,8 @@ impl RigTForm {
     /// the inputs (where that is NaN, a NaN: Rust leaves the sign and
     /// payload of a NaN result unspecified). The rotations are slerped
     /// where they lie, as [`Quat::slerp_slice`] slerps (vectorized on
-    /// x86-64 and AArch64), the translations lerped beside them (with AVX,
-    /// sixteen transforms at a time).
+    /// x86-64 and AArch64), the translations lerped beside them (on
+    /// x86-64, sixteen transforms at a time).
     ///
     /// Slices of different lengths: the first
     /// `min(starts.len(), ends.len(), out.len())` elements are written, and

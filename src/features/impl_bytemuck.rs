@@ -18,7 +18,7 @@
 //!
 //! The crate has no `unsafe` code of its own but the processor's square
 //! root instruction and, on x86-64, the quaternion product in SSE
-//! registers and, with AVX, the slice APIs' lanes.
+//! registers and the slice APIs' vector lanes.
 //! The `unsafe impl`s of these two traits are written by bytemuck's
 //! derive macros, which refuse to compile unless the type is `repr(C)`,
 //! has no padding and has only `Pod` fields; the crate's `unsafe_code`

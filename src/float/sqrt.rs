@@ -41,7 +41,8 @@ pub fn sqrt(x: f32) -> f32 {
 }
 
 /// `sqrtss`, the correctly rounded square root of SSE, through
-/// `core::arch`'s intrinsics: one of the crate's six `unsafe` blocks.
+/// `core::arch`'s intrinsics: one of the few places of the crate's `unsafe`
+/// code (src/lib.rs lists them).
 ///
 /// The intrinsics are `#[target_feature]` functions, `unsafe` to call
 /// from a function that does not enable the feature itself.
@@ -62,7 +63,8 @@ fn vector_unit_sqrt(x: f32) -> f32 {
 /// `fsqrt`, the correctly rounded square root of AArch64's SIMD and
 /// floating-point unit, through `core::arch`'s NEON intrinsics on lane 0 of
 /// a two-lane vector (the compiler reduces it to the scalar `fsqrt s`): one
-/// of the crate's six `unsafe` blocks.
+/// of the few places of the crate's `unsafe` code (src/lib.rs lists
+/// them).
 ///
 /// The intrinsics are `#[target_feature]` functions, `unsafe` to call
 /// from a function that does not enable the feature itself.
@@ -81,7 +83,7 @@ fn vector_unit_sqrt(x: f32) -> f32 {
 }
 
 /// `vsqrt.f32`, the correctly rounded square root of the Arm FPU: one of
-/// the crate's six `unsafe` blocks.
+/// the few places of the crate's `unsafe` code (src/lib.rs lists them).
 ///
 /// Stable Rust has no safe way to reach it in `no_std` code: `f32::sqrt` is
 /// in `std` only (its `core` version is unstable), libm has no Arm FPU path,

@@ -37,7 +37,8 @@ fn by_formula(a: Quat, b: Quat) -> Quat {
 /// [`by_formula`] by columns in SSE registers: `a.w [bw bx by bz]`, plus
 /// `a.x [-bx bw -bz by]`, plus `a.y [-by bz bw -bx]`, plus
 /// `a.z [-bz -by bx bw]`, each column a shuffle of `b` with sign bits
-/// flipped by an exclusive or. One of the crate's six `unsafe` blocks.
+/// flipped by an exclusive or. One of the few places of the crate's
+/// `unsafe` code (src/lib.rs lists them).
 ///
 /// The compiler does vectorize [`by_formula`] too, but it folds each
 /// negated term into a subtraction and builds the sign pattern from

@@ -22,13 +22,14 @@ impl Quat {
     /// angle and sines in f64), written without a branch, many pairs at a
     /// time in vector registers:
     ///
-    /// - where AVX is enabled at compile time (`-C target-cpu=x86-64-v3`,
-    ///   `-C target-cpu=native` on a processor with AVX, or `-C
-    ///   target-feature=+avx`), sixteen pairs a step, in AVX registers
-    ///   written by hand (on a Zen 3 EPYC, 4.9 ns per pair, where the
-    ///   compiler's own vectorization of the same evaluation for AVX2
-    ///   takes 8.7);
-    /// - elsewhere, blocks of 64 pairs that the compiler vectorizes (the
+    /// - on x86-64, sixteen pairs a step, in vector registers written by
+    ///   hand: SSE2's on every target with SSE, AVX's where AVX is enabled
+    ///   at compile time (`-C target-cpu=x86-64-v3`, `-C target-cpu=native`
+    ///   on a processor with AVX, or `-C target-feature=+avx`). On a Zen 3
+    ///   EPYC that is 9.2 ns per pair with SSE2 and 4.9 with AVX, where the
+    ///   compiler's own vectorization of the same evaluation takes 12.1 and
+    ///   8.7;
+    /// - on AArch64, blocks of 64 pairs that the compiler vectorizes (the
     ///   square root included: the crate's square root is the processor's
     ///   instruction, through an intrinsic the vectorizer sees).
     ///

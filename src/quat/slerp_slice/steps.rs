@@ -21,10 +21,13 @@
 //! too, but one block at a time, and it moves the quaternions between their
 //! layout (`w, x, y, z` of one, then the next) and one register per
 //! component with about three times the shuffles of the transposes here.
-//! Medians of one process, 1,024 random unit pairs, on an AMD EPYC (Zen 3),
-//! `-C target-cpu=x86-64-v3`: 4.9 ns per pair here against 8.7 for the
-//! portable lanes (`slerp_slice`), 5.7 against 9.3
-//! (`RigTForm::interpolate_slice`).
+//! Medians of one process, 1,024 random unit pairs, on an AMD EPYC (Zen 3):
+//! on the default target (SSE2) 9.2 ns per pair here against 12.1 for the
+//! portable lanes (`slerp_slice`) and 10.1 against 13.4
+//! (`RigTForm::interpolate_slice`); with `-C target-cpu=x86-64-v3` (AVX)
+//! 4.9 against 8.7 and 5.7 against 9.3. Two blocks a step suit AVX's
+//! sixteen registers of eight lanes, four SSE2's of four (three measured
+//! the same, six and, with AVX, three slower).
 //!
 //! [`Pair::of`]: super::super::slerp_f64::Pair::of
 //! [`Pair::applies`]: super::super::slerp_f64::Pair::applies
@@ -346,8 +349,9 @@ fn evaluate<I: Isa, T: Slerped, const BLOCKS: usize, const CHAINS: usize, const 
 /// `out[i].t = starts[i].t.lerp(ends[i].t, alpha)` for many RigTForms at
 /// once: every one of their f32 components (rotations too, which are
 /// written again afterwards) as `x (1 - alpha) + y alpha`, the operations
-/// of `Cvec3::lerp`, in a loop the compiler vectorizes. One of the crate's
-/// `unsafe` blocks: the arrays of RigTForms seen as arrays of f32.
+/// of `Cvec3::lerp`, in a loop the compiler vectorizes. One of the few
+/// places of the crate's `unsafe` code: the slices of RigTForms seen as
+/// slices of f32.
 #[allow(unsafe_code)]
 #[inline(always)]
 pub(crate) fn lerp_rig_tforms(
