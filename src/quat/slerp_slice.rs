@@ -198,3 +198,67 @@ mod sse2;
     not(feature = "fast-math")
 ))]
 mod lanes;
+
+/// What the tests of every evaluation of the slice share.
+#[cfg(test)]
+mod tests {
+    use super::super::slerp_f64::tests::{rare_pairs, unit};
+    use super::Quat;
+    use crate::{Cvec3, RigTForm};
+    use rand::{Rng, SeedableRng};
+
+    /// Checks an evaluation of the slice (`quats` for quaternions, `rigs`
+    /// for RigTForms, `alpha` 0.3) on slices of every length up to `max`,
+    /// of random unit pairs with a rare pair (`rare_pairs`) every fifth:
+    /// each element the single call's result, bit for bit (NaN for NaN),
+    /// and the element past the slice in a longer `out` untouched.
+    pub(super) fn every_length_is_the_single_calls_bit_for_bit(
+        max: usize,
+        quats: impl Fn(&[Quat], &[Quat], f32, &mut [Quat]),
+        rigs: impl Fn(&[RigTForm], &[RigTForm], f32, &mut [RigTForm]),
+    ) {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(16);
+        let rare = rare_pairs();
+        let pairs: std::vec::Vec<(Quat, Quat)> = (0..max)
+            .map(|i| match i % 5 {
+                3 => rare[i % rare.len()],
+                _ => (unit(&mut rng), unit(&mut rng)),
+            })
+            .collect();
+        let mut rig = |r: Quat| {
+            let mut c = || rng.random_range(-10.0..10.0f32);
+            RigTForm::new(Cvec3::new(c(), c(), c()), r)
+        };
+        let rig_pairs: std::vec::Vec<(RigTForm, RigTForm)> =
+            pairs.iter().map(|&(a, b)| (rig(a), rig(b))).collect();
+        let bits = |q: [f32; 4]| q.map(f32::to_bits);
+        let same = |p: Quat, q: Quat| {
+            bits(p.to_array()) == bits(q.to_array()) || (p.is_nan() && q.is_nan())
+        };
+        let same_t =
+            |p: Cvec3, q: Cvec3| p.to_array().map(f32::to_bits) == q.to_array().map(f32::to_bits);
+        for len in 0..=max {
+            let (starts, ends): (std::vec::Vec<Quat>, std::vec::Vec<Quat>) =
+                pairs[..len].iter().copied().unzip();
+            let mut out = std::vec![Quat::IDENTITY; len + 1];
+            quats(&starts, &ends, 0.3, &mut out);
+            for (i, &q) in out[..len].iter().enumerate() {
+                let expected = starts[i].slerp(ends[i], 0.3);
+                assert!(same(q, expected), "{len} {i}: {q:?} {expected:?}");
+            }
+            assert_eq!(out[len], Quat::IDENTITY);
+            let (starts, ends): (std::vec::Vec<RigTForm>, std::vec::Vec<RigTForm>) =
+                rig_pairs[..len].iter().copied().unzip();
+            let mut out = std::vec![RigTForm::IDENTITY; len + 1];
+            rigs(&starts, &ends, 0.3, &mut out);
+            for (i, x) in out[..len].iter().enumerate() {
+                let expected = starts[i].interpolate(ends[i], 0.3);
+                assert!(
+                    same(x.r, expected.r) && same_t(x.t, expected.t),
+                    "{len} {i}: {x:?} {expected:?}"
+                );
+            }
+            assert_eq!(out[len], RigTForm::IDENTITY);
+        }
+    }
+}

@@ -94,42 +94,13 @@ mod tests {
     /// Blocks, the pairs left to `slerp` in them and the last block, of
     /// slices of every length up to two blocks and a bit, of quaternions
     /// and of RigTForms: each element the single call's result, bit for
-    /// bit, and the rest of a longer `out` untouched.
+    /// bit.
     #[test]
     fn slices_of_every_length_are_the_single_calls_bit_for_bit() {
-        use crate::{Cvec3, RigTForm};
-        let mut rng = rand::rngs::StdRng::seed_from_u64(17);
-        let rare = rare_pairs();
-        let pairs: std::vec::Vec<(Quat, Quat)> = (0..2 * BLOCK + 5)
-            .map(|i| match i % 5 {
-                3 => rare[i % rare.len()],
-                _ => (unit(&mut rng), unit(&mut rng)),
-            })
-            .collect();
-        let bits = |q: Quat| q.to_array().map(f32::to_bits);
-        let same = |p: Quat, q: Quat| bits(p) == bits(q) || (p.is_nan() && q.is_nan());
-        let rig = |q: Quat| RigTForm::new(Cvec3::new(q.x, -q.w, 3.0 * q.y), q);
-        for len in 0..=pairs.len() {
-            let (starts, ends): (std::vec::Vec<Quat>, std::vec::Vec<Quat>) =
-                pairs[..len].iter().copied().unzip();
-            let mut out = std::vec![Quat::IDENTITY; len + 1];
-            slerp_in_blocks(&starts, &ends, 0.3, &mut out);
-            for (i, &q) in out[..len].iter().enumerate() {
-                let expected = starts[i].slerp(ends[i], 0.3);
-                assert!(same(q, expected), "{len} {i}: {q:?} {expected:?}");
-            }
-            assert_eq!(out[len], Quat::IDENTITY);
-            let starts: std::vec::Vec<RigTForm> = starts.into_iter().map(rig).collect();
-            let ends: std::vec::Vec<RigTForm> = ends.into_iter().map(rig).collect();
-            let mut out = std::vec![RigTForm::IDENTITY; len + 1];
-            slerp_in_blocks(&starts, &ends, 0.3, &mut out);
-            for (i, x) in out[..len].iter().enumerate() {
-                let expected = starts[i].interpolate(ends[i], 0.3);
-                assert!(same(x.r, expected.r), "{len} {i}: {x:?} {expected:?}");
-                let t_bits = |t: Cvec3| t.to_array().map(f32::to_bits);
-                assert_eq!(t_bits(x.t), t_bits(expected.t), "{len} {i}");
-            }
-            assert_eq!(out[len], RigTForm::IDENTITY);
-        }
+        super::super::tests::every_length_is_the_single_calls_bit_for_bit(
+            2 * BLOCK + 5,
+            slerp_in_blocks::<Quat>,
+            slerp_in_blocks::<crate::RigTForm>,
+        );
     }
 }

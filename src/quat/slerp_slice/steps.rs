@@ -388,7 +388,7 @@ mod tests {
     use super::super::super::slerp_f64::tests::{just_past_the_small_angles, rare_pairs, unit};
     use super::super::sse2::Sse2;
     use super::*;
-    use crate::{Cvec3, Quat};
+    use crate::Quat;
     use rand::{Rng, SeedableRng};
 
     fn bits(q: Quat) -> [u32; 4] {
@@ -456,62 +456,18 @@ mod tests {
     /// Steps, the pairs left to `slerp` in them, and the last pairs, of
     /// slices of every length up to three steps and a bit, of quaternions
     /// and of RigTForms: each element the single call's result, bit for
-    /// bit, and the rest of a longer `out` untouched.
+    /// bit.
     fn slices_of_every_length_are_the_single_calls<
         I: Isa,
         const BLOCKS: usize,
         const CHAINS: usize,
         const PAIRS: usize,
     >() {
-        let mut rng = rand::rngs::StdRng::seed_from_u64(16);
-        let rare = rare_pairs();
-        let pairs: std::vec::Vec<(Quat, Quat)> = (0..3 * PAIRS + 5)
-            .map(|i| match i % 5 {
-                3 => rare[i % rare.len()],
-                _ => (unit(&mut rng), unit(&mut rng)),
-            })
-            .collect();
-        let (starts, ends): (std::vec::Vec<Quat>, std::vec::Vec<Quat>) =
-            pairs.iter().copied().unzip();
-        let mut shift = || {
-            let mut c = || rng.random_range(-10.0..10.0f32);
-            Cvec3::new(c(), c(), c())
-        };
-        let rig = |q: &[Quat], shift: &mut dyn FnMut() -> Cvec3| -> std::vec::Vec<RigTForm> {
-            q.iter().map(|&r| RigTForm::new(shift(), r)).collect()
-        };
-        let (rig_starts, rig_ends) = (rig(&starts, &mut shift), rig(&ends, &mut shift));
-        let same = |p: Quat, q: Quat| bits(p) == bits(q) || (p.is_nan() && q.is_nan());
-        for len in 0..=pairs.len() {
-            let mut out = std::vec![Quat::IDENTITY; len + 1];
-            slerp_in_steps::<I, Quat, BLOCKS, CHAINS, PAIRS>(
-                &starts[..len],
-                &ends[..len],
-                0.3,
-                &mut out,
-            );
-            for (i, &q) in out[..len].iter().enumerate() {
-                let expected = starts[i].slerp(ends[i], 0.3);
-                assert!(same(q, expected), "{len} {i}: {q:?} {expected:?}");
-            }
-            assert_eq!(out[len], Quat::IDENTITY);
-            let mut out = std::vec![RigTForm::IDENTITY; len + 1];
-            slerp_in_steps::<I, RigTForm, BLOCKS, CHAINS, PAIRS>(
-                &rig_starts[..len],
-                &rig_ends[..len],
-                0.3,
-                &mut out,
-            );
-            for (i, x) in out[..len].iter().enumerate() {
-                let expected = rig_starts[i].interpolate(rig_ends[i], 0.3);
-                assert!(same(x.r, expected.r), "{len} {i}: {x:?} {expected:?}");
-                assert_eq!(
-                    x.t.to_array().map(f32::to_bits),
-                    expected.t.to_array().map(f32::to_bits)
-                );
-            }
-            assert_eq!(out[len], RigTForm::IDENTITY);
-        }
+        super::super::tests::every_length_is_the_single_calls_bit_for_bit(
+            3 * PAIRS + 5,
+            slerp_in_steps::<I, Quat, BLOCKS, CHAINS, PAIRS>,
+            slerp_in_steps::<I, RigTForm, BLOCKS, CHAINS, PAIRS>,
+        );
     }
 
     #[test]
