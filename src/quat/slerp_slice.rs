@@ -31,7 +31,8 @@ impl Quat {
     ///   8.7;
     /// - on AArch64, blocks of 64 pairs that the compiler vectorizes (the
     ///   square root included: the crate's square root is the processor's
-    ///   instruction, through an intrinsic the vectorizer sees).
+    ///   instruction, through an intrinsic the vectorizer sees), and on
+    ///   x86-64 targets without SSE the same blocks in scalar code.
     ///
     /// Every operation is the single call's, in its order (no fused
     /// multiply-add), so the results agree bit for bit where that
