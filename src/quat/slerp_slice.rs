@@ -200,8 +200,12 @@ mod sse2;
 ))]
 mod lanes;
 
-/// What the tests of every evaluation of the slice share.
-#[cfg(test)]
+/// What the tests of every evaluation of the slice in lanes share.
+#[cfg(all(
+    test,
+    any(target_arch = "x86_64", target_arch = "aarch64"),
+    not(feature = "fast-math")
+))]
 mod tests {
     use super::super::slerp_f64::tests::{rare_pairs, unit};
     use super::Quat;
