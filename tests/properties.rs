@@ -493,7 +493,12 @@ proptest! {
         prop_assume!(up.normalize().cross(sight.normalize()).norm() > 0.1);
         let e = RigTForm::look_at(eye, target, up);
         let seen = e.inv().transform_point(target);
-        prop_assert!(close(seen, Cvec3::new(0.0, 0.0, -sight.norm()), 8.0 * ROTATE_MAX_REL_ERROR + 4.0 * accuracy::LOOK_AT_MAX_ANGLE_ERROR));
+        // `seen` is `r^-1 target - r^-1 eye`: the two rotations' errors
+        // scale with |target| and |eye|, and do not cancel however short
+        // the sight between them; the angle's error turns the sight.
+        let error = (seen - Cvec3::new(0.0, 0.0, -sight.norm())).norm();
+        let rotations = 2.0 * ROTATE_MAX_REL_ERROR * (1.0 + eye.norm() + target.norm());
+        prop_assert!(error <= rotations + 4.0 * accuracy::LOOK_AT_MAX_ANGLE_ERROR * sight.norm(), "{}", error);
         // y is on the side of up, and x is perpendicular to it.
         let (x, y) = (e.transform_vector(Cvec3::X), e.transform_vector(Cvec3::Y));
         prop_assert!(y.dot(up) > 0.0);
