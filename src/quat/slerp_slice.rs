@@ -212,6 +212,11 @@ mod tests {
     use crate::{Cvec3, RigTForm};
     use rand::{Rng, SeedableRng};
 
+    /// The bits of the components, to compare results bit for bit.
+    pub(super) fn bits(q: Quat) -> [u32; 4] {
+        q.to_array().map(f32::to_bits)
+    }
+
     /// Checks an evaluation of the slice (`quats` for quaternions, `rigs`
     /// for RigTForms, `alpha` 0.3) on slices of every length up to `max`,
     /// of random unit pairs with a rare pair (`rare_pairs`) every fifth:
@@ -236,10 +241,7 @@ mod tests {
         };
         let rig_pairs: std::vec::Vec<(RigTForm, RigTForm)> =
             pairs.iter().map(|&(a, b)| (rig(a), rig(b))).collect();
-        let bits = |q: [f32; 4]| q.map(f32::to_bits);
-        let same = |p: Quat, q: Quat| {
-            bits(p.to_array()) == bits(q.to_array()) || (p.is_nan() && q.is_nan())
-        };
+        let same = |p: Quat, q: Quat| bits(p) == bits(q) || (p.is_nan() && q.is_nan());
         let same_t =
             |p: Cvec3, q: Cvec3| p.to_array().map(f32::to_bits) == q.to_array().map(f32::to_bits);
         for len in 0..=max {
