@@ -1,5 +1,5 @@
 //! `Display` for every public type: the components in brackets, in the
-//! order of `to_array` (a quaternion scalar first, a matrix column by
+//! order of `to_array` (a quaternion scalar last, as glam prints it, a matrix column by
 //! column), each printed with the formatter's options, so `{:.3}` gives
 //! three decimals throughout.
 
@@ -46,11 +46,11 @@ impl Display for Cvec4 {
 }
 
 impl Display for Quat {
-    /// `[w, x, y, z]`, scalar first.
+    /// `[x, y, z, w]`, scalar last, as [`Quat::to_array`].
     ///
     /// ```
-    /// let q = rigtform::Quat::new(0.5, -0.5, 0.5, 0.5);
-    /// assert_eq!(format!("{q:.2}"), "[0.50, -0.50, 0.50, 0.50]");
+    /// let q = rigtform::Quat::from_wxyz(0.5, -0.5, 0.5, 0.25);
+    /// assert_eq!(format!("{q:.2}"), "[-0.50, 0.50, 0.25, 0.50]");
     /// ```
     fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
         list(f, &self.to_array())
@@ -58,12 +58,12 @@ impl Display for Quat {
 }
 
 impl Display for RigTForm {
-    /// `{t: [x, y, z], r: [w, x, y, z]}`.
+    /// `{t: [x, y, z], r: [x, y, z, w]}`.
     ///
     /// ```
     /// use rigtform::{Cvec3, RigTForm};
     /// let a = RigTForm::from_translation(Cvec3::new(1.0, 2.0, 3.0));
-    /// assert_eq!(a.to_string(), "{t: [1, 2, 3], r: [1, 0, 0, 0]}");
+    /// assert_eq!(a.to_string(), "{t: [1, 2, 3], r: [0, 0, 0, 1]}");
     /// ```
     fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
         f.write_str("{t: ")?;
@@ -115,11 +115,11 @@ mod tests {
             "[0.2, 1.0, 2.0, 1.0]"
         );
         assert_eq!(
-            format!("{:.2}", Quat::new(0.5, -0.5, 0.5, 0.5)),
-            "[0.50, -0.50, 0.50, 0.50]"
+            format!("{:.2}", Quat::from_wxyz(0.5, -0.5, 0.25, 0.5)),
+            "[-0.50, 0.25, 0.50, 0.50]"
         );
         let a = RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::IDENTITY);
-        assert_eq!(format!("{a}"), "{t: [1, 2, 3], r: [1, 0, 0, 0]}");
+        assert_eq!(format!("{a}"), "{t: [1, 2, 3], r: [0, 0, 0, 1]}");
         let m = Matrix4::from_translation(Cvec3::new(7.0, 8.0, 9.0));
         assert_eq!(
             format!("{m:.0}"),

@@ -14,7 +14,7 @@
 //!
 //! # Conventions
 //!
-//! - Quaternions are scalar first: `Quat { w, x, y, z }`, `Quat::new(w, x, y, z)`.
+//! - Quaternions are scalar first: `Quat { w, x, y, z }`, `Quat::from_wxyz(w, x, y, z)`.
 //!   A rotation by `theta` about the unit axis `k` is `[cos(theta/2), sin(theta/2) k]`.
 //! - `*` is the Hamilton product (`i j = k`), and `a * b` applies `b`
 //!   first, then `a`, as rotation matrices and [`RigTForm`]s do.

@@ -42,11 +42,22 @@ pub use euler::EulerRot;
 
 use power::Polar;
 
-/// A quaternion `[w, x, y, z]`, scalar first as in the notes. A rotation of
-/// `theta` radians about the unit axis `k` is `[cos(theta/2), sin(theta/2) k]`.
+/// A rotation quaternion. The notes write it scalar first, `[w, c]`: a
+/// rotation of `theta` radians about the unit axis `k` is
+/// `[cos(theta/2), sin(theta/2) k]`. In memory, in arrays, tuples and casts
+/// it is `x, y, z, w`, scalar last, as glam, nalgebra's storage, mint,
+/// glTF and GPU shaders keep it: a `&[Quat]` uploads to a shader as it is.
 ///
 /// `q` and `-q` are the same rotation. `a * b` is the Hamilton product,
 /// which applies `b` first, then `a` (as rotation matrices do).
+///
+/// Start with [`from_axis_angle`](Self::from_axis_angle) or
+/// [`from_rotation_x`](Self::from_rotation_x) (and `_y`, `_z`); compose with
+/// `*`; rotate a [`Cvec3`] with `q * v`; interpolate with
+/// [`slerp`](Self::slerp). Components come in and out by name:
+/// [`from_xyzw`](Self::from_xyzw) (glam's order) and
+/// [`from_wxyz`](Self::from_wxyz) (the notes' and nalgebra's
+/// `Quaternion::new` order).
 ///
 /// # Examples
 ///
@@ -61,6 +72,9 @@ use power::Polar;
 /// // Halfway from the identity to a quarter turn is an eighth of a turn.
 /// let half = Quat::IDENTITY.slerp(q, 0.5);
 /// assert!((half.angle_to(Quat::from_rotation_z(FRAC_PI_2 / 2.0))) < 1e-6);
+///
+/// // Arrays are x, y, z, w, as glam's.
+/// assert_eq!(Quat::IDENTITY.to_array(), [0.0, 0.0, 0.0, 1.0]);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -68,14 +82,14 @@ use power::Polar;
 #[cfg_attr(feature = "bytemuck", derive(bytemuck::Pod, bytemuck::Zeroable))]
 #[repr(C)]
 pub struct Quat {
-    /// Scalar part, `cos(theta / 2)` for a rotation by `theta`.
-    pub w: f32,
     /// First coordinate of the vector part, `sin(theta / 2) k.x`.
     pub x: f32,
     /// Second coordinate of the vector part, `sin(theta / 2) k.y`.
     pub y: f32,
     /// Third coordinate of the vector part, `sin(theta / 2) k.z`.
     pub z: f32,
+    /// Scalar part, `cos(theta / 2)` for a rotation by `theta`.
+    pub w: f32,
 }
 
 impl Default for Quat {
@@ -87,11 +101,13 @@ impl Default for Quat {
 
 impl Quat {
     /// The identity rotation `[1, 0, 0, 0]`.
-    pub const IDENTITY: Self = Self::new(1.0, 0.0, 0.0, 0.0);
+    pub const IDENTITY: Self = Self::from_wxyz(1.0, 0.0, 0.0, 0.0);
     /// All components NaN: the documented result for NaN or infinite input.
-    pub const NAN: Self = Self::new(f32::NAN, f32::NAN, f32::NAN, f32::NAN);
+    pub const NAN: Self = Self::from_wxyz(f32::NAN, f32::NAN, f32::NAN, f32::NAN);
 
-    /// Builds a quaternion from its components, scalar first.
+    /// Builds a quaternion from its components in glam's order, scalar
+    /// last: `x, y, z` the vector part, `w` the scalar part. The same as
+    /// glam's `Quat::from_xyzw`.
     ///
     /// # Preconditions
     ///
@@ -99,12 +115,51 @@ impl Quat {
     ///
     /// ```
     /// use rigtform::Quat;
-    /// assert_eq!(Quat::new(1.0, 0.0, 0.0, 0.0), Quat::IDENTITY);
+    /// assert_eq!(Quat::from_xyzw(0.0, 0.0, 0.0, 1.0), Quat::IDENTITY);
     /// ```
     #[inline]
     #[must_use]
+    pub const fn from_xyzw(x: f32, y: f32, z: f32, w: f32) -> Self {
+        Self { x, y, z, w }
+    }
+
+    /// Builds a quaternion from its components scalar first, as the notes
+    /// write `[w, c]` and as nalgebra's `Quaternion::new(w, i, j, k)` takes
+    /// them.
+    ///
+    /// # Preconditions
+    ///
+    /// None here; the rotation methods expect a unit quaternion and say so.
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// assert_eq!(Quat::from_wxyz(1.0, 0.0, 0.0, 0.0), Quat::IDENTITY);
+    /// assert_eq!(Quat::from_wxyz(4.0, 1.0, 2.0, 3.0), Quat::from_xyzw(1.0, 2.0, 3.0, 4.0));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_wxyz(w: f32, x: f32, y: f32, z: f32) -> Self {
+        Self { x, y, z, w }
+    }
+
+    /// Scalar first, as [`from_wxyz`](Self::from_wxyz). Its order is not
+    /// in its name, and glam's users expect scalar last: call
+    /// [`from_wxyz`](Self::from_wxyz) or [`from_xyzw`](Self::from_xyzw).
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::Quat;
+    /// assert_eq!(Quat::new(1.0, 0.0, 0.0, 0.0), Quat::from_wxyz(1.0, 0.0, 0.0, 0.0));
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "the order is not in the name: use `Quat::from_wxyz(w, x, y, z)` (scalar first, \
+                as here and in nalgebra's `Quaternion::new`) or `Quat::from_xyzw(x, y, z, w)` (glam's)"
+    )]
+    #[inline]
+    #[must_use]
     pub const fn new(w: f32, x: f32, y: f32, z: f32) -> Self {
-        Self { w, x, y, z }
+        Self::from_wxyz(w, x, y, z)
     }
 
     /// The rotation by `angle` radians about `axis`, by the right-hand rule:
@@ -157,7 +212,7 @@ impl Quat {
     #[must_use]
     pub fn from_rotation_x(angle: f32) -> Self {
         let (s, c) = float::sin_cos(angle * 0.5);
-        Self::new(c, s, 0.0, 0.0)
+        Self::from_wxyz(c, s, 0.0, 0.0)
     }
 
     /// The rotation by `angle` radians about the y axis.
@@ -172,7 +227,7 @@ impl Quat {
     #[must_use]
     pub fn from_rotation_y(angle: f32) -> Self {
         let (s, c) = float::sin_cos(angle * 0.5);
-        Self::new(c, 0.0, s, 0.0)
+        Self::from_wxyz(c, 0.0, s, 0.0)
     }
 
     /// The rotation by `angle` radians about the z axis.
@@ -187,14 +242,14 @@ impl Quat {
     #[must_use]
     pub fn from_rotation_z(angle: f32) -> Self {
         let (s, c) = float::sin_cos(angle * 0.5);
-        Self::new(c, 0.0, 0.0, s)
+        Self::from_wxyz(c, 0.0, 0.0, s)
     }
 
     /// The vector part `[x, y, z]`.
     ///
     /// ```
     /// use rigtform::{Cvec3, Quat};
-    /// assert_eq!(Quat::new(1.0, 2.0, 3.0, 4.0).vector(), Cvec3::new(2.0, 3.0, 4.0));
+    /// assert_eq!(Quat::from_wxyz(1.0, 2.0, 3.0, 4.0).vector(), Cvec3::new(2.0, 3.0, 4.0));
     /// ```
     #[inline]
     #[must_use]
@@ -204,46 +259,56 @@ impl Quat {
 
     #[inline]
     pub(crate) const fn from_scalar_vector(w: f32, v: Cvec3) -> Self {
-        Self::new(w, v.x, v.y, v.z)
+        Self::from_wxyz(w, v.x, v.y, v.z)
     }
 
-    /// The components as an array `[w, x, y, z]`, scalar first as in the
-    /// notes. glam and `mint` store `[x, y, z, w]`, scalar last: glam's
-    /// `Quat::from_array([x, y, z, w])` is this crate's
-    /// `Quat::new(w, x, y, z)`.
+    /// The components as an array `[x, y, z, w]`, scalar last: the order
+    /// of glam's `to_array`, of mint, glTF and GPU shaders, and of the
+    /// memory layout.
     ///
     /// ```
     /// use rigtform::Quat;
-    /// let q = Quat::new(1.0, 2.0, 3.0, 4.0);
+    /// let q = Quat::from_xyzw(1.0, 2.0, 3.0, 4.0);
     /// assert_eq!(q.to_array(), [1.0, 2.0, 3.0, 4.0]);
-    /// let [w, x, y, z] = q.to_array();
-    /// let glam_order = [x, y, z, w];
-    /// assert_eq!(glam_order, [2.0, 3.0, 4.0, 1.0]);
+    /// assert_eq!(Quat::IDENTITY.to_array(), [0.0, 0.0, 0.0, 1.0]);
     /// ```
     #[inline]
     #[must_use]
     pub const fn to_array(self) -> [f32; 4] {
-        [self.w, self.x, self.y, self.z]
+        [self.x, self.y, self.z, self.w]
     }
 
-    /// Builds a quaternion from an array `[w, x, y, z]`, scalar first (see
-    /// [`to_array`](Self::to_array) for glam's order).
+    /// Builds a quaternion from an array `[x, y, z, w]`, scalar last, as
+    /// glam's `from_array` and glTF's rotation accessors.
     ///
     /// ```
     /// use rigtform::Quat;
-    /// assert_eq!(Quat::from_array([1.0, 0.0, 0.0, 0.0]), Quat::IDENTITY);
+    /// assert_eq!(Quat::from_array([0.0, 0.0, 0.0, 1.0]), Quat::IDENTITY);
     /// ```
     #[inline]
     #[must_use]
-    pub const fn from_array([w, x, y, z]: [f32; 4]) -> Self {
-        Self::new(w, x, y, z)
+    pub const fn from_array([x, y, z, w]: [f32; 4]) -> Self {
+        Self { x, y, z, w }
+    }
+
+    /// The components scalar first, `[w, x, y, z]`, as the notes write
+    /// them.
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// assert_eq!(Quat::IDENTITY.to_wxyz(), [1.0, 0.0, 0.0, 0.0]);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn to_wxyz(self) -> [f32; 4] {
+        [self.w, self.x, self.y, self.z]
     }
 
     /// `f` of each component: the one place a `Quat`'s components are
     /// scaled one by one.
     #[inline(always)]
     fn map(self, f: impl Fn(f32) -> f32) -> Self {
-        Self::new(f(self.w), f(self.x), f(self.y), f(self.z))
+        Self::from_wxyz(f(self.w), f(self.x), f(self.y), f(self.z))
     }
 
     /// `true` if every component is finite.
@@ -262,7 +327,7 @@ impl Quat {
     /// ```
     /// use rigtform::Quat;
     /// assert!(Quat::NAN.is_nan());
-    /// assert!(!Quat::new(f32::INFINITY, 0.0, 0.0, 0.0).is_nan());
+    /// assert!(!Quat::from_wxyz(f32::INFINITY, 0.0, 0.0, 0.0).is_nan());
     /// ```
     #[inline]
     #[must_use]
@@ -278,7 +343,7 @@ impl Quat {
     /// ```
     /// use rigtform::Quat;
     /// assert!(Quat::from_rotation_x(0.3).is_normalized());
-    /// assert!(!Quat::new(2.0, 0.0, 0.0, 0.0).is_normalized());
+    /// assert!(!Quat::from_wxyz(2.0, 0.0, 0.0, 0.0).is_normalized());
     /// assert!(!Quat::NAN.is_normalized());
     /// ```
     #[doc(alias = "is_unit")]
@@ -308,7 +373,7 @@ impl Quat {
     #[inline]
     #[must_use]
     pub fn inv(self) -> Self {
-        Self::new(self.w, -self.x, -self.y, -self.z)
+        Self::from_wxyz(self.w, -self.x, -self.y, -self.z)
     }
 
     /// Dot product of the four components, `cos(angle/2)` of the rotation
@@ -328,7 +393,7 @@ impl Quat {
     /// beyond about 1.8e19; use [`norm`](Self::norm) for the norm itself.
     ///
     /// ```
-    /// assert_eq!(rigtform::Quat::new(1.0, 1.0, 1.0, 1.0).norm_squared(), 4.0);
+    /// assert_eq!(rigtform::Quat::from_wxyz(1.0, 1.0, 1.0, 1.0).norm_squared(), 4.0);
     /// ```
     #[doc(alias = "length_squared")]
     #[inline]
@@ -342,8 +407,8 @@ impl Quat {
     ///
     /// ```
     /// use rigtform::Quat;
-    /// assert_eq!(Quat::new(0.0, 3.0, 0.0, 4.0).norm(), 5.0);
-    /// assert_eq!(Quat::new(f32::MAX, 0.0, 0.0, 0.0).norm(), f32::MAX);
+    /// assert_eq!(Quat::from_wxyz(0.0, 3.0, 0.0, 4.0).norm(), 5.0);
+    /// assert_eq!(Quat::from_wxyz(f32::MAX, 0.0, 0.0, 0.0).norm(), f32::MAX);
     /// ```
     #[doc(alias = "length")]
     #[inline]
@@ -363,14 +428,13 @@ impl Quat {
     ///
     /// ```
     /// use rigtform::Quat;
-    /// assert_eq!(Quat::new(2.0, 0.0, 0.0, 0.0).try_normalize(), Some(Quat::IDENTITY));
-    /// assert_eq!(Quat::new(0.0, 0.0, 0.0, 0.0).try_normalize(), None);
+    /// assert_eq!(Quat::from_wxyz(2.0, 0.0, 0.0, 0.0).try_normalize(), Some(Quat::IDENTITY));
+    /// assert_eq!(Quat::from_wxyz(0.0, 0.0, 0.0, 0.0).try_normalize(), None);
     /// ```
     #[inline]
     #[must_use]
     pub fn try_normalize(self) -> Option<Self> {
-        let [w, x, y, z] = scale_for_squares(self.to_array()).unit()?;
-        Some(Self::new(w, x, y, z))
+        Some(Self::from_array(scale_for_squares(self.to_array()).unit()?))
     }
 
     /// `self / |self|`: pulls a quaternion that drifted off the unit sphere
@@ -388,7 +452,7 @@ impl Quat {
     ///
     /// ```
     /// use rigtform::Quat;
-    /// let q = Quat::new(1e-40, 0.0, 1e-40, 0.0).normalize(); // subnormal input
+    /// let q = Quat::from_wxyz(1e-40, 0.0, 1e-40, 0.0).normalize(); // subnormal input
     /// assert!((q.norm() - 1.0).abs() < 1e-6);
     /// ```
     #[inline]
@@ -403,8 +467,8 @@ impl Quat {
     ///
     /// ```
     /// use rigtform::Quat;
-    /// assert_eq!(Quat::new(-0.6, 0.8, 0.0, 0.0).cn(), Quat::new(0.6, -0.8, 0.0, 0.0));
-    /// assert_eq!(Quat::new(0.6, 0.8, 0.0, 0.0).cn(), Quat::new(0.6, 0.8, 0.0, 0.0));
+    /// assert_eq!(Quat::from_wxyz(-0.6, 0.8, 0.0, 0.0).cn(), Quat::from_wxyz(0.6, -0.8, 0.0, 0.0));
+    /// assert_eq!(Quat::from_wxyz(0.6, 0.8, 0.0, 0.0).cn(), Quat::from_wxyz(0.6, 0.8, 0.0, 0.0));
     /// ```
     #[doc(alias = "conditional_negate")]
     #[inline]
@@ -566,7 +630,7 @@ impl MulAssign<Quat> for Quat {
 }
 
 impl From<[f32; 4]> for Quat {
-    /// Same as [`Quat::from_array`]: `[w, x, y, z]`, scalar first.
+    /// Same as [`Quat::from_array`]: `[x, y, z, w]`, scalar last.
     #[inline]
     fn from(a: [f32; 4]) -> Self {
         Self::from_array(a)
@@ -574,10 +638,37 @@ impl From<[f32; 4]> for Quat {
 }
 
 impl From<Quat> for [f32; 4] {
-    /// Same as [`Quat::to_array`]: `[w, x, y, z]`, scalar first.
+    /// Same as [`Quat::to_array`]: `[x, y, z, w]`, scalar last.
     #[inline]
     fn from(q: Quat) -> Self {
         q.to_array()
+    }
+}
+
+impl From<(f32, f32, f32, f32)> for Quat {
+    /// `(x, y, z, w)`, scalar last, as [`Quat::from_xyzw`].
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// assert_eq!(Quat::from((0.0, 0.0, 0.0, 1.0)), Quat::IDENTITY);
+    /// ```
+    #[inline]
+    fn from((x, y, z, w): (f32, f32, f32, f32)) -> Self {
+        Self::from_xyzw(x, y, z, w)
+    }
+}
+
+impl From<Quat> for (f32, f32, f32, f32) {
+    /// `(x, y, z, w)`, scalar last, as [`Quat::to_array`].
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let (x, y, z, w) = Quat::IDENTITY.into();
+    /// assert_eq!((x, y, z, w), (0.0, 0.0, 0.0, 1.0));
+    /// ```
+    #[inline]
+    fn from(q: Quat) -> Self {
+        (q.x, q.y, q.z, q.w)
     }
 }
 
@@ -640,7 +731,7 @@ impl Neg for Quat {
     /// ```
     #[inline]
     fn neg(self) -> Quat {
-        Quat::new(-self.w, -self.x, -self.y, -self.z)
+        Quat::from_wxyz(-self.w, -self.x, -self.y, -self.z)
     }
 }
 
@@ -652,13 +743,13 @@ mod tests {
     #[test]
     fn product_of_axis_rotations_matches_the_notes_formula() {
         // i j = k, j k = i, k i = j (Hamilton).
-        let i = Quat::new(0.0, 1.0, 0.0, 0.0);
-        let j = Quat::new(0.0, 0.0, 1.0, 0.0);
-        let k = Quat::new(0.0, 0.0, 0.0, 1.0);
+        let i = Quat::from_wxyz(0.0, 1.0, 0.0, 0.0);
+        let j = Quat::from_wxyz(0.0, 0.0, 1.0, 0.0);
+        let k = Quat::from_wxyz(0.0, 0.0, 0.0, 1.0);
         assert_eq!(i * j, k);
         assert_eq!(j * k, i);
         assert_eq!(k * i, j);
-        assert_eq!(i * i, Quat::new(-1.0, 0.0, 0.0, 0.0));
+        assert_eq!(i * i, Quat::from_wxyz(-1.0, 0.0, 0.0, 0.0));
     }
 
     #[test]
@@ -688,13 +779,13 @@ mod tests {
 
     #[test]
     fn norm_squared_is_the_sum_of_the_four_squares() {
-        assert_eq!(Quat::new(1.0, -2.0, 3.0, 0.5).norm_squared(), 14.25);
-        assert_eq!(Quat::new(0.0, 3.0, 0.0, 4.0).norm(), 5.0);
+        assert_eq!(Quat::from_wxyz(1.0, -2.0, 3.0, 0.5).norm_squared(), 14.25);
+        assert_eq!(Quat::from_wxyz(0.0, 3.0, 0.0, 4.0).norm(), 5.0);
     }
 
     #[test]
     fn to_axis_angle_of_a_half_turn_is_pi() {
-        let (axis, angle) = Quat::new(0.0, 0.0, 0.0, -1.0).to_axis_angle();
+        let (axis, angle) = Quat::from_wxyz(0.0, 0.0, 0.0, -1.0).to_axis_angle();
         assert_eq!(axis, -Cvec3::Z);
         assert_eq!(angle, PI);
     }

@@ -173,7 +173,7 @@ fn to_scaled_axis_is_scale_free() {
         let want = q.to_scaled_axis();
         let bound = 2.0 * accuracy::TO_SCALED_AXIS_MAX_REL_ERROR * want.norm().max(1e-30);
         for k in [2f32.powi(-120), 1e-20, 3.0, 1e20, 2f32.powi(100)] {
-            let got = Quat::new(q.w * k, q.x * k, q.y * k, q.z * k).to_scaled_axis();
+            let got = Quat::from_wxyz(q.w * k, q.x * k, q.y * k, q.z * k).to_scaled_axis();
             assert!(
                 (got - want).norm() <= bound,
                 "{q:?} times {k:e}: {got:?}, want {want:?}"
@@ -181,7 +181,7 @@ fn to_scaled_axis_is_scale_free() {
         }
     }
     // Subnormal components: a quarter turn about x.
-    let got = Quat::new(1e-42, 1e-42, 0.0, 0.0).to_scaled_axis();
+    let got = Quat::from_wxyz(1e-42, 1e-42, 0.0, 0.0).to_scaled_axis();
     let want = Cvec3::new(core::f32::consts::FRAC_PI_2, 0.0, 0.0);
     assert!((got - want).norm() <= 2.0 * accuracy::TO_SCALED_AXIS_MAX_REL_ERROR * want.norm());
 }

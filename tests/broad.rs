@@ -19,7 +19,7 @@ fn samples() -> Vec<data::BroadSample> {
 /// The optical truth of a sample, if the markers were seen.
 fn truth(s: &data::BroadSample) -> Option<Quat> {
     let [w, x, y, z] = s.truth.map(|c| c as f32);
-    (!s.truth[0].is_nan()).then(|| Quat::new(w, x, y, z))
+    (!s.truth[0].is_nan()).then(|| Quat::from_wxyz(w, x, y, z))
 }
 
 /// Index of the sample at `seconds` into the trial.

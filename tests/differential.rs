@@ -167,7 +167,7 @@ fn slerp_of_rotations_exactly_pi_apart_is_finite_unit_and_halfway_at_the_middle(
     for _ in 0..draw_count() / 4 {
         let a = draws.unit_quat();
         let axis = draws.unit_vec64();
-        let b = Quat::new(0.0, axis.x as f32, axis.y as f32, axis.z as f32) * a;
+        let b = Quat::from_wxyz(0.0, axis.x as f32, axis.y as f32, axis.z as f32) * a;
         let alpha = draws.uniform(0.0, 1.0) as f32;
         let got = a.slerp(b, alpha);
         assert!(got.is_finite());
@@ -209,7 +209,7 @@ fn normalize_is_within_its_bound_from_subnormal_to_huge() {
     for _ in 0..draw_count() {
         let scale = 10f64.powf(draws.uniform(-44.0, 38.0));
         let q = [(); 4].map(|_| (draws.uniform(-1.0, 1.0) * scale) as f32);
-        let q = Quat::new(q[0], q[1], q[2], q[3]);
+        let q = Quat::from_wxyz(q[0], q[1], q[2], q[3]);
         let exact = to_f64(q).norm();
         let ulp = {
             let n = exact as f32;
@@ -221,7 +221,7 @@ fn normalize_is_within_its_bound_from_subnormal_to_huge() {
         } else {
             assert_eq!(
                 q,
-                Quat::new(0.0, 0.0, 0.0, 0.0),
+                Quat::from_wxyz(0.0, 0.0, 0.0, 0.0),
                 "only zero has no direction"
             );
         }

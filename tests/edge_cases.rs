@@ -32,7 +32,7 @@ fn is_unit(q: Quat, bound: f32) -> bool {
 
 /// `q` with every component times `k` (the crate has no `Quat * f32`).
 fn scaled(q: Quat, k: f32) -> Quat {
-    Quat::new(q.w * k, q.x * k, q.y * k, q.z * k)
+    Quat::from_wxyz(q.w * k, q.x * k, q.y * k, q.z * k)
 }
 
 #[test]
@@ -106,8 +106,8 @@ fn no_function_panics_on_random_bit_patterns() {
     let mut rng = rand::rngs::StdRng::seed_from_u64(7);
     let mut any = || f32::from_bits(rng.random());
     for _ in 0..100_000 {
-        let q = Quat::new(any(), any(), any(), any());
-        let r = Quat::new(any(), any(), any(), any());
+        let q = Quat::from_wxyz(any(), any(), any(), any());
+        let r = Quat::from_wxyz(any(), any(), any(), any());
         let v = Cvec3::new(any(), any(), any());
         let alpha = any();
         let a = RigTForm::new(v, q);
@@ -164,7 +164,7 @@ fn no_function_panics_on_random_bit_patterns() {
 fn pow_is_finite_and_unit_for_every_finite_nonzero_edge_input() {
     let mut checked = 0u64;
     for q in edge_quats().filter(|q| q.is_finite()) {
-        if q == Quat::new(0.0, 0.0, 0.0, 0.0) {
+        if q == Quat::from_wxyz(0.0, 0.0, 0.0, 0.0) {
             continue;
         }
         for alpha in finite_edges() {
@@ -183,17 +183,17 @@ fn pow_is_finite_and_unit_for_every_finite_nonzero_edge_input() {
 #[test]
 fn pow_of_zero_and_of_pure_reals() {
     for zero in [
-        Quat::new(0.0, 0.0, 0.0, 0.0),
-        Quat::new(-0.0, -0.0, 0.0, -0.0),
+        Quat::from_wxyz(0.0, 0.0, 0.0, 0.0),
+        Quat::from_wxyz(-0.0, -0.0, 0.0, -0.0),
     ] {
         assert_eq!(zero.pow(0.3), Quat::IDENTITY);
     }
     for w in [1e-45, 1.0, 2.0, f32::MAX] {
-        assert_eq!(Quat::new(w, 0.0, 0.0, 0.0).pow(0.7), Quat::IDENTITY);
+        assert_eq!(Quat::from_wxyz(w, 0.0, 0.0, 0.0).pow(0.7), Quat::IDENTITY);
     }
     // w < 0 is a 2 pi turn; documented to go about the x axis.
     for w in [-1e-45, -1.0, -f32::MAX] {
-        let p = Quat::new(w, 0.0, -0.0, 0.0).pow(0.25);
+        let p = Quat::from_wxyz(w, 0.0, -0.0, 0.0).pow(0.25);
         let want = Quat::from_rotation_x(PI / 2.0);
         assert!(
             p.angle_to(want) <= pow_bound(PI / 2.0) && p.dot(want) > 0.0,
@@ -205,27 +205,33 @@ fn pow_of_zero_and_of_pure_reals() {
 #[test]
 fn pow_of_w_minus_one_exactly_and_of_tiny_and_huge_vector_parts() {
     let cases = [
-        (Quat::new(-1.0, 0.0, 0.0, 0.0), "w = -1 exactly"),
+        (Quat::from_wxyz(-1.0, 0.0, 0.0, 0.0), "w = -1 exactly"),
         (
-            Quat::new(-1.0, 1e-45, 0.0, 0.0),
+            Quat::from_wxyz(-1.0, 1e-45, 0.0, 0.0),
             "w = -1, subnormal vector part",
         ),
-        (Quat::new(1.0, 1e-45, 1e-45, 0.0), "subnormal vector part"),
-        (Quat::new(1.0, 0.0, 1e-40, -1e-40), "subnormal vector part"),
         (
-            Quat::new(0.5, 1e-20, 0.0, 0.0),
+            Quat::from_wxyz(1.0, 1e-45, 1e-45, 0.0),
+            "subnormal vector part",
+        ),
+        (
+            Quat::from_wxyz(1.0, 0.0, 1e-40, -1e-40),
+            "subnormal vector part",
+        ),
+        (
+            Quat::from_wxyz(0.5, 1e-20, 0.0, 0.0),
             "vector part squared underflows",
         ),
-        (Quat::new(1e30, 1e30, 1e30, 1e30), "1e30 components"),
+        (Quat::from_wxyz(1e30, 1e30, 1e30, 1e30), "1e30 components"),
         (
-            Quat::new(f32::MAX, f32::MAX, f32::MAX, f32::MAX),
+            Quat::from_wxyz(f32::MAX, f32::MAX, f32::MAX, f32::MAX),
             "f32::MAX components",
         ),
         (
-            Quat::new(0.0, f32::MAX, -f32::MAX, 0.0),
+            Quat::from_wxyz(0.0, f32::MAX, -f32::MAX, 0.0),
             "pure vector, huge",
         ),
-        (Quat::new(1e-45, 0.0, 0.0, 1e-45), "all subnormal"),
+        (Quat::from_wxyz(1e-45, 0.0, 0.0, 1e-45), "all subnormal"),
     ];
     for (q, what) in cases {
         for alpha in [0.0, 0.5, 1.0, 2.0, -3.0] {
@@ -242,7 +248,7 @@ fn pow_of_w_minus_one_exactly_and_of_tiny_and_huge_vector_parts() {
     }
     // Subnormal vector parts keep their direction exactly.
     let (three, four) = (f32::from_bits(3), f32::from_bits(4)); // 3 and 4 times 2^-149
-    let p = Quat::new(1.0, 0.0, three, four).pow(1e30);
+    let p = Quat::from_wxyz(1.0, 0.0, three, four).pow(1e30);
     let axis = p.vector().normalize();
     assert!((axis - Cvec3::new(0.0, 0.6, 0.8)).norm() < 1e-6, "{axis:?}");
 }
@@ -275,8 +281,8 @@ fn pow_with_any_finite_alpha_is_unit() {
 #[test]
 fn nan_or_infinity_in_gives_nan_out() {
     for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
-        let q = Quat::new(bad, 0.0, 0.0, 0.0);
-        let r = Quat::new(1.0, 0.0, bad, 0.0);
+        let q = Quat::from_wxyz(bad, 0.0, 0.0, 0.0);
+        let r = Quat::from_wxyz(1.0, 0.0, bad, 0.0);
         let good = Quat::from_rotation_x(0.3);
         assert!(is_nan_quat(q.pow(0.5)) && is_nan_quat(r.pow(0.5)));
         assert!(is_nan_quat(good.pow(bad)));
@@ -302,11 +308,11 @@ fn nan_or_infinity_in_gives_nan_out() {
 fn documented_results_for_degenerate_input() {
     assert_eq!(Quat::from_axis_angle(Cvec3::ZERO, 1.0), Quat::IDENTITY);
     assert_eq!(
-        Quat::new(0.0, 0.0, 0.0, 0.0).to_axis_angle(),
+        Quat::from_wxyz(0.0, 0.0, 0.0, 0.0).to_axis_angle(),
         (Cvec3::X, 0.0)
     );
     assert_eq!(Quat::blend(&[]), Quat::IDENTITY);
-    assert!(is_nan_quat(Quat::new(0.0, 0.0, 0.0, 0.0).normalize()));
+    assert!(is_nan_quat(Quat::from_wxyz(0.0, 0.0, 0.0, 0.0).normalize()));
     assert_eq!(
         Matrix4::from_scale(Cvec3::new(1.0, 1.0, 0.0)).inverse(),
         None
@@ -327,8 +333,8 @@ fn slerp_of_identical_nearly_identical_antipodal_and_opposite_rotations() {
     let bases = [
         Quat::IDENTITY,
         Quat::from_axis_angle(Cvec3::new(1.0, -2.0, 0.5), 2.9),
-        Quat::new(0.0, 0.0, 0.0, 1.0),
-        Quat::new(-0.5, 0.5, -0.5, 0.5),
+        Quat::from_wxyz(0.0, 0.0, 0.0, 1.0),
+        Quat::from_wxyz(-0.5, 0.5, -0.5, 0.5),
     ];
     for a in bases {
         let cases = [
@@ -338,8 +344,11 @@ fn slerp_of_identical_nearly_identical_antipodal_and_opposite_rotations() {
                 "1e-6 rad apart",
             ),
             (-a, "antipodal"),
-            (Quat::new(0.0, 0.6, 0.0, 0.8) * a, "pi apart"),
-            (-(Quat::new(0.0, 0.0, 1.0, 0.0) * a), "pi apart, negated"),
+            (Quat::from_wxyz(0.0, 0.6, 0.0, 0.8) * a, "pi apart"),
+            (
+                -(Quat::from_wxyz(0.0, 0.0, 1.0, 0.0) * a),
+                "pi apart, negated",
+            ),
         ];
         for (b, what) in cases {
             let theta = a.angle_to(b);
@@ -389,7 +398,7 @@ fn slerp_of_inputs_closer_than_f32_squares_can_tell_is_the_tiny_turn() {
     // 1e-20 apart: the part of b orthogonal to a has squares below 2^-100,
     // which slerp scales up by an exact power of two before taking the angle.
     let a = Quat::IDENTITY;
-    let b = Quat::new(1.0, 1e-20, 0.0, 0.0);
+    let b = Quat::from_wxyz(1.0, 1e-20, 0.0, 0.0);
     for alpha in [0.25f32, 0.5, 1.0, 2.0] {
         let s = a.slerp(b, alpha);
         assert!(is_unit(s, UNIT_NORM_ERROR), "{alpha}: {s:?}");
@@ -472,7 +481,7 @@ fn normalize_works_from_subnormal_to_max() {
     for q in edge_quats().filter(|q| q.is_finite()) {
         match q.try_normalize() {
             Some(n) => assert!(is_unit(n, NORMALIZE_MAX_NORM_ERROR), "{q:?} -> {n:?}"),
-            None => assert_eq!(q, Quat::new(0.0, 0.0, 0.0, 0.0)),
+            None => assert_eq!(q, Quat::from_wxyz(0.0, 0.0, 0.0, 0.0)),
         }
     }
 }
@@ -518,7 +527,7 @@ fn renormalized_product_is_the_same_rotation_as_the_plain_one() {
     }
     // A drifted input comes back to unit in one step: a norm of 1 + e
     // becomes 1 - 3 e^2 / 2 (1.5e-8 here), plus rounding.
-    let drifted = Quat::new(0.0, 0.0, 1.0 + 1e-4, 0.0);
+    let drifted = Quat::from_wxyz(0.0, 0.0, 1.0 + 1e-4, 0.0);
     let n = drifted.mul_renormalized(Quat::IDENTITY).norm();
     assert!((n - 1.0).abs() <= UNIT_NORM_ERROR, "{n}");
     assert!(is_nan_quat(Quat::NAN.mul_renormalized(Quat::IDENTITY)));
@@ -531,8 +540,8 @@ fn renormalized_product_is_the_same_rotation_as_the_plain_one() {
 #[test]
 fn slerp_extrapolated_from_nearly_antipodal_inputs_is_unit() {
     let (h, t) = (8.8e-44, -4.408_238_2e-18);
-    let a = Quat::new(0.0, h, h, h).normalize();
-    let b = Quat::new(h, t, t, t).normalize();
+    let a = Quat::from_wxyz(0.0, h, h, h).normalize();
+    let b = Quat::from_wxyz(h, t, t, t).normalize();
     for alpha in [t, -1e-3, 1.5, -4.4e-18, 1e30, 0.5] {
         rigtform_proofs::laws::slerp_is_unit(a, b, alpha)
             .unwrap_or_else(|v| panic!("alpha {alpha:e}: {v:?}"));
@@ -554,12 +563,13 @@ fn slerp_extrapolated_from_nearly_antipodal_inputs_is_unit() {
 /// it removes, which must not show in the norm (by 2e-6, unchecked).
 #[test]
 fn slerp_extrapolated_far_from_nearly_antipodal_inputs_of_any_scale_is_unit() {
-    let b = Quat::new(2.195_525_5e-18, -26_711_958.0, -26_711_958.0, -26_711_958.0).normalize();
+    let b =
+        Quat::from_wxyz(2.195_525_5e-18, -26_711_958.0, -26_711_958.0, -26_711_958.0).normalize();
     // The second first input is the same rotation as -b to within 1e-22
     // rad: most of the difference is rounding along a, which alpha must
     // not blow up into a turn (2.7e7 times that rounding).
     for w in [1.599_975_6, 9.094_808e-14] {
-        let a = Quat::new(w, 865_309_600.0, 865_309_600.0, 865_309_600.0).normalize();
+        let a = Quat::from_wxyz(w, 865_309_600.0, 865_309_600.0, 865_309_600.0).normalize();
         for alpha in [-26_711_958.0, 26_711_958.0, -3e5, 1e9, -1.511_584e21] {
             rigtform_proofs::laws::slerp_is_unit(a, b, alpha)
                 .unwrap_or_else(|v| panic!("w {w:e}, alpha {alpha:e}: {v:?}"));
@@ -570,7 +580,7 @@ fn slerp_extrapolated_far_from_nearly_antipodal_inputs_of_any_scale_is_unit() {
             );
         }
     }
-    let a = Quat::new(9.094_808e-14, 865_309_600.0, 865_309_600.0, 865_309_600.0).normalize();
+    let a = Quat::from_wxyz(9.094_808e-14, 865_309_600.0, 865_309_600.0, 865_309_600.0).normalize();
     let s = a.slerp(b, -26_711_958.0);
     assert!(s.angle_to(a) < 1e-14, "{s:?}");
 }

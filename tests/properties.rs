@@ -38,7 +38,7 @@ proptest! {
 
     #[test]
     fn rotation_matches_the_notes_triple_product(q in unit_quat(), c in vec3()) {
-        let pure = Quat::new(0.0, c.x, c.y, c.z);
+        let pure = Quat::from_wxyz(0.0, c.x, c.y, c.z);
         let triple = q * pure * q.inv();
         prop_assert!(close(q * c, triple.vector(), 2.0 * ROTATE_MAX_REL_ERROR));
         prop_assert!(triple.w.abs() <= 2.0 * ROTATE_MAX_REL_ERROR * c.norm());
@@ -640,7 +640,7 @@ fn slice_pair() -> impl Strategy<Value = (Quat, Quat)> {
     let raw = || {
         prop::array::uniform4(any::<u32>()).prop_map(|b| {
             let [w, x, y, z] = b.map(f32::from_bits);
-            Quat::new(w, x, y, z)
+            Quat::from_wxyz(w, x, y, z)
         })
     };
     prop_oneof![
@@ -648,14 +648,14 @@ fn slice_pair() -> impl Strategy<Value = (Quat, Quat)> {
         1 => unit_quat().prop_map(|a| (a, a)),
         1 => unit_quat().prop_map(|a| (a, -a)),
         1 => (unit_quat(), 1e-7f32..1e-2).prop_map(|(a, t)| (a, a * Quat::from_rotation_y(t))),
-        1 => (unit_quat(), unit_quat(), 0.99f32..1.01).prop_map(|(a, b, s)| (a, Quat::new(b.w * s, b.x * s, b.y * s, b.z * s))),
+        1 => (unit_quat(), unit_quat(), 0.99f32..1.01).prop_map(|(a, b, s)| (a, Quat::from_wxyz(b.w * s, b.x * s, b.y * s, b.z * s))),
         1 => (raw(), raw()),
         1 => (unit_quat(), edge.clone(), 0usize..4).prop_map(|(a, e, i)| {
             let mut c = [a.w, a.x, a.y, a.z];
             if let Some(c) = c.get_mut(i) {
                 *c = e;
             }
-            (Quat::new(c[0], c[1], c[2], c[3]), a)
+            (Quat::from_wxyz(c[0], c[1], c[2], c[3]), a)
         }),
     ]
 }

@@ -3,7 +3,8 @@
 //! same numbers.
 
 pub fn rig_quat(q: [f32; 4]) -> rigtform::Quat {
-    rigtform::Quat::from_array(q)
+    let [w, x, y, z] = q;
+    rigtform::Quat::from_wxyz(w, x, y, z)
 }
 pub fn rig_vec(v: [f32; 3]) -> rigtform::Cvec3 {
     rigtform::Cvec3::from_array(v)

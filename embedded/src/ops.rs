@@ -36,7 +36,7 @@ fn put(o: &mut Output, r: &[f32]) {
 }
 
 fn quat(q: [f32; 4]) -> Quat {
-    Quat::new(q[0], q[1], q[2], q[3])
+    Quat::from_wxyz(q[0], q[1], q[2], q[3])
 }
 fn vec3(v: [f32; 3]) -> Cvec3 {
     Cvec3::new(v[0], v[1], v[2])
@@ -106,8 +106,8 @@ fn keys(x: &Input) -> [Quat; 4] {
     [
         quat(x.a),
         quat(x.b),
-        Quat::new(ax, ay, az, aw),
-        Quat::new(by, bz, bw, bx),
+        Quat::from_wxyz(ax, ay, az, aw),
+        Quat::from_wxyz(by, bz, bw, bx),
     ]
 }
 /// One evaluation inside the middle segment of four keys.

@@ -26,7 +26,8 @@ fn moderate(v: Cvec3) -> bool {
 
 fuzz_target!(|input: Input| {
     let order = EulerRot::ALL[usize::from(input.order) % EulerRot::ALL.len()];
-    let q = Quat::from_array(input.q);
+    let [w, x, y, z] = input.q;
+    let q = Quat::from_wxyz(w, x, y, z);
     let [a, b, c] = input.angles;
     let (from, to, up) = (
         Cvec3::from_array(input.from),

@@ -30,7 +30,7 @@ fn vec3([x, y, z]: [f32; 3]) -> Cvec3 {
 }
 
 fn quat([w, x, y, z]: [f32; 4]) -> Quat {
-    Quat::new(w, x, y, z)
+    Quat::from_wxyz(w, x, y, z)
 }
 
 fn within_limit(v: Cvec3) -> bool {
@@ -65,7 +65,7 @@ fuzz_target!(|input: Input| {
         ));
     }
 
-    let zero = Quat::new(0.0, 0.0, 0.0, 0.0);
+    let zero = Quat::from_wxyz(0.0, 0.0, 0.0, 0.0);
     if !(a.r.is_finite() && a.r != zero && within_limit(a.t) && within_limit(b.t)) {
         return;
     }

@@ -74,7 +74,7 @@ impl Draws {
     /// then normalized in `f32`), so a uniformly distributed rotation.
     pub fn unit_quat(&mut self) -> Quat {
         loop {
-            let q = Quat::new(
+            let q = Quat::from_wxyz(
                 self.uniform(-1.0, 1.0),
                 self.uniform(-1.0, 1.0),
                 self.uniform(-1.0, 1.0),

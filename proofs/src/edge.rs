@@ -51,6 +51,6 @@ pub fn edge_quats() -> impl Iterator<Item = rigtform::Quat> {
     (0..EDGE_F32.len().pow(4)).map(|i| {
         let n = EDGE_F32.len();
         let at = |k: usize| EDGE_F32.get(k % n).copied().unwrap_or(0.0);
-        rigtform::Quat::new(at(i), at(i / n), at(i / (n * n)), at(i / (n * n * n)))
+        rigtform::Quat::from_wxyz(at(i), at(i / n), at(i / (n * n)), at(i / (n * n * n)))
     })
 }

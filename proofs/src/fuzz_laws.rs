@@ -17,7 +17,7 @@ use rigtform::Quat;
 /// rigtform_proofs::fuzz_laws::pow([0.5, 0.5, -0.5, 0.5], 0.25);
 /// ```
 pub fn pow(q: [f32; 4], alpha: f32) {
-    let q = Quat::from_array(q);
+    let q = Quat::from_wxyz(q[0], q[1], q[2], q[3]);
     if q.is_finite() && alpha.is_finite() {
         assert_holds(laws::pow_is_unit(q, alpha));
         if alpha.abs() <= 4.0 {
@@ -30,7 +30,7 @@ pub fn pow(q: [f32; 4], alpha: f32) {
     assert_holds(laws::inverse_is_an_involution(q));
 }
 
-const ZERO: Quat = Quat::new(0.0, 0.0, 0.0, 0.0);
+const ZERO: Quat = Quat::from_wxyz(0.0, 0.0, 0.0, 0.0);
 /// 2^60: inputs within it keep `b a^-1` finite.
 const LIMIT: f32 = 1.152_921_5e18;
 
@@ -58,11 +58,7 @@ fn within_limit(q: Quat) -> bool {
 /// rigtform_proofs::fuzz_laws::slerp(a, b, a, 0.5, [1.0, 1.0, 1.0]);
 /// ```
 pub fn slerp(a: [f32; 4], b: [f32; 4], c: [f32; 4], alpha: f32, weights: [f32; 3]) {
-    let (a, b, c) = (
-        Quat::from_array(a),
-        Quat::from_array(b),
-        Quat::from_array(c),
-    );
+    let (a, b, c) = (wxyz(a), wxyz(b), wxyz(c));
 
     // No panic on anything; NaN or infinity in, NaN out.
     let _ = (a.slerp(b, alpha), a.nlerp(b, alpha));
@@ -132,4 +128,10 @@ pub fn slerp(a: [f32; 4], b: [f32; 4], c: [f32; 4], alpha: f32, weights: [f32; 3
             (uc, weights[2]),
         ]));
     }
+}
+
+/// A fuzz input's four floats as a quaternion, scalar first: the order the
+/// committed seeds and regressions were written in.
+fn wxyz([w, x, y, z]: [f32; 4]) -> Quat {
+    Quat::from_wxyz(w, x, y, z)
 }

@@ -77,7 +77,7 @@ fn any_within(limit: f32) -> f32 {
 
 /// Any quaternion with components of magnitude at most `limit`.
 fn any_quat_within(limit: f32) -> Quat {
-    Quat::new(
+    Quat::from_wxyz(
         any_within(limit),
         any_within(limit),
         any_within(limit),
@@ -92,12 +92,12 @@ fn any_vec_within(limit: f32) -> Cvec3 {
 
 /// Any quaternion: every bit pattern of every component.
 fn any_quat_bits() -> Quat {
-    Quat::new(kani::any(), kani::any(), kani::any(), kani::any())
+    Quat::from_wxyz(kani::any(), kani::any(), kani::any(), kani::any())
 }
 
 /// Any finite quaternion.
 fn any_finite_quat() -> Quat {
-    Quat::new(any_finite(), any_finite(), any_finite(), any_finite())
+    Quat::from_wxyz(any_finite(), any_finite(), any_finite(), any_finite())
 }
 
 /// A unit quaternion as the laws' preconditions mean it: any finite
@@ -106,7 +106,7 @@ fn any_finite_quat() -> Quat {
 fn any_unit_quat() -> Quat {
     let q = any_finite_quat();
     // Precondition of normalize_is_unit: not zero.
-    kani::assume(q != Quat::new(0.0, 0.0, 0.0, 0.0));
+    kani::assume(q != Quat::from_wxyz(0.0, 0.0, 0.0, 0.0));
     q.normalize()
 }
 
@@ -156,8 +156,8 @@ fn quat_product_multiplies_norms() {
 /// norms in `[2^-40, 2^80]`) holds by construction, so nothing is assumed.
 fn product_norm_with_exponents_in(name: &str, lo: i32, hi: i32) {
     check(name, || {
-        let a = Quat::new(any_with_exponent_in(lo, hi), 0.75, -0.5, 0.25);
-        let b = Quat::new(0.5, any_with_exponent_in(lo, hi), 0.25, -0.75);
+        let a = Quat::from_wxyz(any_with_exponent_in(lo, hi), 0.75, -0.5, 0.25);
+        let b = Quat::from_wxyz(0.5, any_with_exponent_in(lo, hi), 0.25, -0.75);
         assert_holds(laws::product_norm_is_multiplicative(a, b));
     });
 }
@@ -213,7 +213,7 @@ fn normalize_is_unit_from_subnormal_to_max() {
         // Precondition: finite and not zero. No solver bound: normalize's
         // exact power-of-two rescaling is the point.
         let q = any_finite_quat();
-        kani::assume(q != Quat::new(0.0, 0.0, 0.0, 0.0));
+        kani::assume(q != Quat::from_wxyz(0.0, 0.0, 0.0, 0.0));
         // The branches of scale_for_squares: the sum of squares underflows
         // (components below 2^-75 or so) or overflows (beyond 2^63).
         let largest = [q.w, q.x, q.y, q.z]
@@ -234,7 +234,7 @@ fn normalize_is_unit_from_subnormal_to_max() {
 /// Zero and non-zero are decided by construction: nothing is assumed.
 fn normalize_with_exponents_in(name: &str, lo: i32, hi: i32) {
     check(name, || {
-        let q = Quat::new(
+        let q = Quat::from_wxyz(
             any_with_exponent_in(lo, hi),
             any_with_exponent_in(-127, hi),
             0.0,
@@ -305,7 +305,7 @@ fn pow_is_unit_for_every_finite_input() {
         let q = if kani::any() {
             any_finite_quat()
         } else {
-            Quat::new(any_finite(), 0.0, 0.0, 0.0)
+            Quat::from_wxyz(any_finite(), 0.0, 0.0, 0.0)
         };
         let alpha = any_finite();
         kani::cover!(q.x == 0.0 && q.y == 0.0 && q.z == 0.0, "pure real");
@@ -516,7 +516,7 @@ fn quat_times_inverse_is_real() {
 /// (components within 2^60) holds by construction.
 fn product_with_inverse_with_exponents_in(name: &str, lo: i32, hi: i32) {
     check(name, || {
-        let q = Quat::new(
+        let q = Quat::from_wxyz(
             any_with_exponent_in(lo, hi),
             any_with_exponent_in(lo, hi),
             0.375,
@@ -718,7 +718,7 @@ fn from_matrix_inverts_from_quat() {
             let v = any_vec_within(MILLION);
             // Precondition of normalize_is_unit: not zero.
             kani::assume(v != Cvec3::ZERO);
-            Quat::new(0.0, v.x, v.y, v.z).normalize()
+            Quat::from_wxyz(0.0, v.x, v.y, v.z).normalize()
         };
         // The branch from_matrix takes: the largest of four times the
         // squares of w, x, y and z, read from the matrix as it reads them.

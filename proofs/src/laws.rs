@@ -438,7 +438,7 @@ pub fn rigid_product_with_inverse_is_identity(a: RigTForm) -> Verdict {
     product_with_inverse_is_real(a.r)?;
     within(
         "rigid_product_with_inverse_is_identity (rotation, squared)",
-        norm2(Quat::new(p.r.w - 1.0, p.r.x, p.r.y, p.r.z)),
+        norm2(Quat::from_wxyz(p.r.w - 1.0, p.r.x, p.r.y, p.r.z)),
         4.0 * ONE_STEP_NORM_TOL * ONE_STEP_NORM_TOL,
     )?;
     within(
@@ -734,8 +734,14 @@ mod tests {
         let v = Cvec3::new(1.0, -2.0, 0.5);
         assert_eq!(product_norm_is_multiplicative(a, b), Ok(()));
         assert_eq!(rotation_preserves_length(b, v), Ok(()));
-        assert_eq!(normalize_is_unit(Quat::new(1e-40, 3e-41, 0.0, 0.0)), Ok(()));
-        assert_eq!(pow_is_unit(Quat::new(-1.0, 0.0, 0.0, 0.0), 0.3), Ok(()));
+        assert_eq!(
+            normalize_is_unit(Quat::from_wxyz(1e-40, 3e-41, 0.0, 0.0)),
+            Ok(())
+        );
+        assert_eq!(
+            pow_is_unit(Quat::from_wxyz(-1.0, 0.0, 0.0, 0.0), 0.3),
+            Ok(())
+        );
         assert_eq!(pow_of_non_finite_is_nan(a, f32::NAN), Ok(()));
         assert_eq!(slerp_of_non_finite_is_nan(a, Quat::NAN, 0.5), Ok(()));
         assert_eq!(slerp_of_non_finite_is_nan(a, b, f32::INFINITY), Ok(()));
@@ -788,9 +794,9 @@ mod tests {
     fn laws_fail_on_inputs_that_break_them() {
         // Inputs outside the preconditions, where the law is false.
         let a = Quat::from_rotation_x(0.7);
-        let scaled = Quat::new(2.0, 0.0, 0.0, 0.0);
-        assert!(rotation_preserves_length(Quat::new(0.0, 2.0, 0.0, 0.0), Cvec3::Y).is_err());
-        assert!(normalize_is_unit(Quat::new(0.0, 0.0, 0.0, 0.0)).is_err());
+        let scaled = Quat::from_wxyz(2.0, 0.0, 0.0, 0.0);
+        assert!(rotation_preserves_length(Quat::from_wxyz(0.0, 2.0, 0.0, 0.0), Cvec3::Y).is_err());
+        assert!(normalize_is_unit(Quat::from_wxyz(0.0, 0.0, 0.0, 0.0)).is_err());
         assert!(pow_is_unit(Quat::NAN, 0.5).is_err());
         assert!(pow_of_non_finite_is_nan(a, 0.5).is_err());
         assert!(slerp_of_non_finite_is_nan(a, a, 0.5).is_err());
@@ -800,8 +806,11 @@ mod tests {
         assert!(nlerp_is_unit(Quat::NAN, a, 0.5).is_err());
         assert!(blend_is_unit_or_identity(&[(scaled, 1.0)]).is_ok()); // normalized
         assert!(blend_is_unit_or_identity(&[(a, f32::NAN)]).is_err());
-        assert!(product_with_inverse_is_real(Quat::new(1e30, 1e30, 0.0, 0.0)).is_err());
-        let off = RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::new(0.0, 2.0, 0.0, 0.0));
+        assert!(product_with_inverse_is_real(Quat::from_wxyz(1e30, 1e30, 0.0, 0.0)).is_err());
+        let off = RigTForm::new(
+            Cvec3::new(1.0, 2.0, 3.0),
+            Quat::from_wxyz(0.0, 2.0, 0.0, 0.0),
+        );
         assert!(rigid_product_with_inverse_is_identity(off).is_err());
         assert!(rigid_inverse_is_an_involution(off).is_err());
         assert!(rigid_inverse_matches_matrix_inverse(off).is_err());
@@ -848,7 +857,7 @@ mod tests {
         let b = 2.0 * ONE_STEP_NORM_TOL + 4.0 * f64::from(ROTATE_MAX_REL_ERROR);
         let at = |d: f64| {
             let s = (1.0 + d).sqrt() as f32;
-            rotation_preserves_length(Quat::new(0.0, s, 0.0, 0.0), Cvec3::Y)
+            rotation_preserves_length(Quat::from_wxyz(0.0, s, 0.0, 0.0), Cvec3::Y)
         };
         assert_eq!(at(0.2 * b), Ok(()));
         assert!(at(1.0 * b).is_err());
@@ -858,7 +867,7 @@ mod tests {
     fn the_product_law_fails_where_products_underflow() {
         // Outside the precondition: the product of two 1e-30 quaternions
         // underflows to zero, and its norm is no longer the product of norms.
-        let tiny = Quat::new(1e-30, 1e-30, 0.0, 0.0);
+        let tiny = Quat::from_wxyz(1e-30, 1e-30, 0.0, 0.0);
         assert!(product_norm_is_multiplicative(tiny, tiny).is_err());
     }
 
@@ -868,15 +877,15 @@ mod tests {
         for k in 0..4 {
             let mut c = [f32::NAN; 4];
             c[k] = 0.0;
-            assert!(!is_nan_quat(Quat::new(c[0], c[1], c[2], c[3])));
+            assert!(!is_nan_quat(Quat::from_wxyz(c[0], c[1], c[2], c[3])));
             let mut d = [1.0f32; 4];
             d[k] = -1.0;
-            let q = Quat::new(d[0], d[1], d[2], d[3]);
-            assert!(!same_bits(q, Quat::new(1.0, 1.0, 1.0, 1.0)));
+            let q = Quat::from_wxyz(d[0], d[1], d[2], d[3]);
+            assert!(!same_bits(q, Quat::from_wxyz(1.0, 1.0, 1.0, 1.0)));
         }
         assert!(!same_bits(
-            Quat::new(0.0, 0.0, 0.0, 0.0),
-            Quat::new(-0.0, 0.0, 0.0, 0.0)
+            Quat::from_wxyz(0.0, 0.0, 0.0, 0.0),
+            Quat::from_wxyz(-0.0, 0.0, 0.0, 0.0)
         ));
         assert!(same_bits(Quat::NAN, Quat::NAN));
     }

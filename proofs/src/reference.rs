@@ -112,7 +112,7 @@ mod tests {
 
     #[test]
     fn pow_of_a_half_turn_is_a_quarter_turn() {
-        let q = Quat64::from(Quat::new(0.0, 0.0, 0.0, 1.0)); // pi about z
+        let q = Quat64::from(Quat::from_wxyz(0.0, 0.0, 0.0, 1.0)); // pi about z
         let h = q.pow(0.5);
         let quarter = core::f64::consts::FRAC_PI_4;
         assert!((h.w - quarter.cos()).abs() < 1e-15 && (h.z - quarter.sin()).abs() < 1e-15);

@@ -170,7 +170,7 @@ mod tests {
         // takes x to z and y to x, which is a turn of -120° about (1, 1, 1).
         let a = AxesAlignment::new(Axis::PosZ, Axis::PosX).unwrap();
         // cos(-60°) and sin(-60°) / sqrt(3), exactly: no kernel involved.
-        let q = Quat::new(0.5, -0.5, -0.5, -0.5);
+        let q = Quat::from_wxyz(0.5, -0.5, -0.5, -0.5);
         let v = Cvec3::new(0.3, -1.2, 2.5);
         assert!(
             (a.apply(v) - q * v).norm() < 1e-5,

@@ -156,7 +156,7 @@ mod tests {
     fn undoes_a_known_distortion() {
         let truth = Cvec3::new(0.3, -0.7, 9.6);
         // Distortion: turn by about 4° about (1, 2, 3), scale (1.02, 0.97, 1.01), add an offset.
-        let turn = Quat::new(1.0, 0.0087, 0.0175, 0.0262).normalize();
+        let turn = Quat::from_wxyz(1.0, 0.0087, 0.0175, 0.0262).normalize();
         let scale = Cvec3::new(1.02, 0.97, 1.01);
         let offset = Cvec3::new(0.05, -0.02, 0.11);
         let t = turn.inv() * truth;
@@ -201,7 +201,7 @@ mod tests {
             hard_iron,
         };
         for k in 0..12 {
-            let q = Quat::new(1.0, k as f32 - 6.0, 2.0, 0.5 * k as f32).normalize();
+            let q = Quat::from_wxyz(1.0, k as f32 - 6.0, 2.0, 0.5 * k as f32).normalize();
             let v = q * field;
             let read = Cvec3::new(1.3 * v.x, v.y, v.z) + hard_iron;
             let error = (cal.apply(read).norm() - field.norm()).abs();

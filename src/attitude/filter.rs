@@ -588,9 +588,9 @@ fn horizontal_axes(q: Quat) -> [Cvec3; 2] {
 /// (the half-way vector construction). For `u = -z` exactly, a half turn
 /// about x.
 fn rotation_to_up(u: Cvec3) -> Quat {
-    Quat::new(1.0 + u.z, u.y, -u.x, 0.0)
+    Quat::from_wxyz(1.0 + u.z, u.y, -u.x, 0.0)
         .try_normalize()
-        .unwrap_or(Quat::new(0.0, 1.0, 0.0, 0.0))
+        .unwrap_or(Quat::from_wxyz(0.0, 1.0, 0.0, 0.0))
 }
 
 #[cfg(test)]

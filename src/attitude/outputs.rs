@@ -108,7 +108,7 @@ mod tests {
         let g = FilterParams::DEFAULT.gravity;
         for k in 0..24 {
             // Unit quaternions without the trigonometric kernels.
-            let q = Quat::new(3.0 - 0.25 * k as f32, 1.0, -2.0, k as f32 - 12.0).normalize();
+            let q = Quat::from_wxyz(3.0 - 0.25 * k as f32, 1.0, -2.0, k as f32 - 12.0).normalize();
             let f = OrientationFilter::with_attitude(FilterParams::DEFAULT, q);
             let still = q.inv() * Cvec3::new(0.0, 0.0, g);
             assert!(f.linear_acceleration(still).norm() < 1e-5, "{k}");

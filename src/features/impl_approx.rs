@@ -55,8 +55,8 @@ impl Components for Quat {
 impl Components for RigTForm {
     type Array = [f32; 7];
     fn components(&self) -> [f32; 7] {
-        let ([x, y, z], [w, i, j, k]) = (self.t.to_array(), self.r.to_array());
-        [x, y, z, w, i, j, k]
+        let ([x, y, z], [i, j, k, w]) = (self.t.to_array(), self.r.to_array());
+        [x, y, z, i, j, k, w]
     }
 }
 
@@ -153,15 +153,18 @@ mod tests {
         every_component_counts(Cvec4::new(1.0, -2.0, 3.0, 0.5), |a| {
             Cvec4::new(a[0], a[1], a[2], a[3])
         });
-        every_component_counts(Quat::new(0.5, -0.5, 0.5, 0.5), |a| {
-            Quat::new(a[0], a[1], a[2], a[3])
+        every_component_counts(Quat::from_wxyz(0.5, -0.5, 0.5, 0.5), |a| {
+            Quat::from_wxyz(a[0], a[1], a[2], a[3])
         });
         every_component_counts(
-            RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::new(0.5, -0.5, 0.5, 0.5)),
+            RigTForm::new(
+                Cvec3::new(1.0, 2.0, 3.0),
+                Quat::from_wxyz(0.5, -0.5, 0.5, 0.5),
+            ),
             |a| {
                 RigTForm::new(
                     Cvec3::new(a[0], a[1], a[2]),
-                    Quat::new(a[3], a[4], a[5], a[6]),
+                    Quat::from_wxyz(a[3], a[4], a[5], a[6]),
                 )
             },
         );

@@ -6,8 +6,8 @@
 //! flash.
 //!
 //! Each type is `#[repr(C)]` and made only of `f32`s, so its bytes are its
-//! components in field order, without padding: `Quat` is `w, x, y, z`
-//! (scalar first; glam's `Quat` is `x, y, z, w`), `RigTForm` is `t` then
+//! components in field order, without padding: `Quat` is `x, y, z, w`
+//! (scalar last, as glam's `Quat`, glTF and shaders), `RigTForm` is `t` then
 //! `r` (7 floats), `Matrix4` is 16 floats, column-major.
 //! [`OrientationFilter`](crate::attitude::OrientationFilter) and
 //! [`Diagnostics`](crate::attitude::Diagnostics) are not `Pod`: they hold
@@ -27,9 +27,10 @@
 //!
 //! ```
 //! use rigtform::{Cvec3, Matrix4, Quat};
-//! let q = Quat::new(1.0, 2.0, 3.0, 4.0);
+//! let q = Quat::from_xyzw(1.0, 2.0, 3.0, 4.0);
 //! let f: &[f32; 4] = bytemuck::cast_ref(&q);
 //! assert_eq!(f, &[1.0, 2.0, 3.0, 4.0]);
+//! assert_eq!(bytemuck::cast::<Quat, [f32; 4]>(Quat::IDENTITY), [0.0, 0.0, 0.0, 1.0]);
 //! let points = [Cvec3::X, Cvec3::Y];
 //! let bytes: &[u8] = bytemuck::cast_slice(&points);
 //! assert_eq!(bytes.len(), 24);
@@ -61,13 +62,19 @@ mod tests {
             floats(&Cvec4::new(1.0, 2.0, 3.0, 4.0)),
             [1.0, 2.0, 3.0, 4.0]
         );
-        assert_eq!(floats(&Quat::new(1.0, 2.0, 3.0, 4.0)), [1.0, 2.0, 3.0, 4.0]);
-        let r = RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::new(4.0, 5.0, 6.0, 7.0));
+        assert_eq!(
+            floats(&Quat::from_wxyz(1.0, 2.0, 3.0, 4.0)),
+            [2.0, 3.0, 4.0, 1.0]
+        );
+        let r = RigTForm::new(
+            Cvec3::new(1.0, 2.0, 3.0),
+            Quat::from_xyzw(4.0, 5.0, 6.0, 7.0),
+        );
         assert_eq!(floats(&r), [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);
         let m = Matrix4::from_cols_array(&core::array::from_fn(|i| i as f32));
         let want: [f32; 16] = core::array::from_fn(|i| i as f32);
         assert_eq!(floats(&m), want, "column-major");
-        let s = Smoother::new(Quat::new(1.0, 2.0, 3.0, 4.0), 5.0);
+        let s = Smoother::new(Quat::from_wxyz(1.0, 2.0, 3.0, 4.0), 5.0);
         assert_eq!(floats(&s), [1.0, 2.0, 3.0, 4.0, 5.0]);
         let p = FilterParams::DEFAULT;
         let f = floats(&p);
@@ -93,7 +100,7 @@ mod tests {
         assert!(zeroed_bits::<Smoother>() && zeroed_bits::<FilterParams>());
         assert!(zeroed_bits::<InertialCalibration>() && zeroed_bits::<MagneticCalibration>());
         let q: Quat = bytemuck::Zeroable::zeroed();
-        assert_eq!(q, Quat::new(0.0, 0.0, 0.0, 0.0));
+        assert_eq!(q, Quat::from_wxyz(0.0, 0.0, 0.0, 0.0));
     }
 
     /// Bytes written by one side (say, a GPU buffer or a radio packet) read

@@ -82,7 +82,7 @@ impl From<Cvec4> for mint::Vector4<f32> {
 
 impl From<mint::Quaternion<f32>> for Quat {
     fn from(q: mint::Quaternion<f32>) -> Self {
-        Self::new(q.s, q.v.x, q.v.y, q.v.z)
+        Self::from_wxyz(q.s, q.v.x, q.v.y, q.v.z)
     }
 }
 
@@ -156,7 +156,7 @@ mod tests {
         assert_eq!((v.x, v.y, v.z), (1.0, 2.0, 3.0));
         let v4: mint::Vector4<f32> = via(Cvec4::new(1.0, 2.0, 3.0, 4.0));
         assert_eq!(v4.w, 4.0);
-        let q: mint::Quaternion<f32> = via(Quat::new(1.0, 2.0, 3.0, 4.0));
+        let q: mint::Quaternion<f32> = via(Quat::from_wxyz(1.0, 2.0, 3.0, 4.0));
         assert_eq!((q.s, q.v.x, q.v.z), (1.0, 2.0, 4.0));
         let m: mint::ColumnMatrix4<f32> = via(Matrix4::from_translation(Cvec3::X));
         assert_eq!(m.w.x, 1.0);

@@ -1,7 +1,7 @@
 //! `serde::Serialize` and `serde::Deserialize` for every public type
 //! (feature `serde`), derived: each type is written as a struct with the
-//! field names of its Rust definition, so a `Quat` is `{w, x, y, z}`
-//! (scalar first, whatever order the format keeps) and a `Matrix4` is
+//! field names of its Rust definition, so a `Quat` is `{x, y, z, w}`
+//! (scalar last, as glam's; a format without names keeps that order) and a `Matrix4` is
 //! `{cols: [c0, c1, c2, c3]}`, column-major; an [`EulerRot`](crate::EulerRot)
 //! is its variant's name (`"ZYX"`). The attitude types
 //! ([`OrientationFilter`](crate::attitude::OrientationFilter) with its
@@ -90,12 +90,12 @@ mod tests {
         assert_eq!(round_trip(&d).1, d);
     }
 
-    /// The component order is the one of the Rust fields: scalar first for
+    /// The component order is the one of the Rust fields: scalar last for
     /// a `Quat`, columns for a `Matrix4`.
     #[test]
     fn fields_are_named_as_in_rust() {
-        let (json, _) = round_trip(&Quat::new(1.0, 2.0, 3.0, 4.0));
-        assert_eq!(json, r#"{"w":1.0,"x":2.0,"y":3.0,"z":4.0}"#);
+        let (json, _) = round_trip(&Quat::from_wxyz(1.0, 2.0, 3.0, 4.0));
+        assert_eq!(json, r#"{"x":2.0,"y":3.0,"z":4.0,"w":1.0}"#);
         let m = Matrix4::from_translation(Cvec3::new(5.0, 6.0, 7.0));
         let (json, _) = round_trip(&m);
         assert!(

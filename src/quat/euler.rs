@@ -84,12 +84,12 @@ impl EulerRot {
     fn relabel_to_xyz(self, q: Quat) -> (Quat, f32) {
         let Quat { w, x, y, z } = q;
         match self {
-            Self::XYZ => (Quat::new(w, x, y, z), 1.0),
-            Self::YZX => (Quat::new(w, y, z, x), 1.0),
-            Self::ZXY => (Quat::new(w, z, x, y), 1.0),
-            Self::XZY => (Quat::new(w, x, z, -y), -1.0),
-            Self::YXZ => (Quat::new(w, y, x, -z), -1.0),
-            Self::ZYX => (Quat::new(w, z, y, -x), -1.0),
+            Self::XYZ => (Quat::from_wxyz(w, x, y, z), 1.0),
+            Self::YZX => (Quat::from_wxyz(w, y, z, x), 1.0),
+            Self::ZXY => (Quat::from_wxyz(w, z, x, y), 1.0),
+            Self::XZY => (Quat::from_wxyz(w, x, z, -y), -1.0),
+            Self::YXZ => (Quat::from_wxyz(w, y, x, -z), -1.0),
+            Self::ZYX => (Quat::from_wxyz(w, z, y, -x), -1.0),
         }
     }
 
@@ -97,12 +97,12 @@ impl EulerRot {
     fn relabel_from_xyz(self, q: Quat) -> Quat {
         let Quat { w, x, y, z } = q;
         match self {
-            Self::XYZ => Quat::new(w, x, y, z),
-            Self::YZX => Quat::new(w, z, x, y),
-            Self::ZXY => Quat::new(w, y, z, x),
-            Self::XZY => Quat::new(w, x, -z, y),
-            Self::YXZ => Quat::new(w, y, x, -z),
-            Self::ZYX => Quat::new(w, -z, y, x),
+            Self::XYZ => Quat::from_wxyz(w, x, y, z),
+            Self::YZX => Quat::from_wxyz(w, z, x, y),
+            Self::ZXY => Quat::from_wxyz(w, y, z, x),
+            Self::XZY => Quat::from_wxyz(w, x, -z, y),
+            Self::YXZ => Quat::from_wxyz(w, y, x, -z),
+            Self::ZYX => Quat::from_wxyz(w, -z, y, x),
         }
     }
 }
@@ -154,7 +154,7 @@ impl Quat {
         let (sc, cc) = float::sin_cos(sign * c * 0.5);
         // (ca + sa i) (cb + sb j) (cc + sc k), expanded.
         let (w0, x0, y0, z0) = (ca * cb, sa * cb, ca * sb, sa * sb);
-        let q = Self::new(
+        let q = Self::from_wxyz(
             w0 * cc - z0 * sc,
             x0 * cc + y0 * sc,
             y0 * cc - x0 * sc,
@@ -210,7 +210,7 @@ impl Quat {
         let (q, sign) = order.relabel_to_xyz(self.cn());
         // Power-of-two scaling keeps the sums below from overflowing or
         // losing everything to underflow; the angles are scale-free.
-        let [w, x, y, z] = float::scale_for_squares(q.to_array()).v;
+        let [x, y, z, w] = float::scale_for_squares(q.to_array()).v;
         let (u_re, u_im) = (w + y, x + z);
         let (v_re, v_im) = (w - y, x - z);
         let u = libm::hypotf(u_re, u_im);
@@ -299,7 +299,7 @@ mod tests {
     #[test]
     fn at_gimbal_lock_the_third_angle_is_zero() {
         // (w + y, x + z) = 0 in XYZ coordinates: b = -pi/2 exactly.
-        let q = Quat::new(0.5, 0.5, -0.5, -0.5);
+        let q = Quat::from_wxyz(0.5, 0.5, -0.5, -0.5);
         let (a, b, c) = q.to_euler(EulerRot::XYZ);
         assert_eq!((b, c), (-FRAC_PI_2, 0.0));
         assert!(Quat::from_euler(EulerRot::XYZ, a, b, c).angle_to(q) < TOL);
@@ -318,7 +318,7 @@ mod tests {
         let (a, b, c) = Quat::NAN.to_euler(EulerRot::ZYX);
         assert!(a.is_nan() && b.is_nan() && c.is_nan());
         assert_eq!(
-            Quat::new(0.0, 0.0, 0.0, 0.0).to_euler(EulerRot::ZYX),
+            Quat::from_wxyz(0.0, 0.0, 0.0, 0.0).to_euler(EulerRot::ZYX),
             (0.0, 0.0, 0.0)
         );
         let huge = Quat::from_euler(EulerRot::YXZ, 0.5, 0.25, -PI / 3.0).map(|c| c * 1e38);

@@ -181,9 +181,12 @@ mod tests {
     fn scaled_axis_of_edge_inputs() {
         assert_eq!(Quat::from_scaled_axis(Cvec3::ZERO), Quat::IDENTITY);
         assert_eq!(Quat::IDENTITY.to_scaled_axis(), Cvec3::ZERO);
-        assert_eq!(Quat::new(0.0, 0.0, 0.0, 0.0).to_scaled_axis(), Cvec3::ZERO);
         assert_eq!(
-            Quat::new(-1.0, 0.0, 0.0, 0.0).to_scaled_axis(),
+            Quat::from_wxyz(0.0, 0.0, 0.0, 0.0).to_scaled_axis(),
+            Cvec3::ZERO
+        );
+        assert_eq!(
+            Quat::from_wxyz(-1.0, 0.0, 0.0, 0.0).to_scaled_axis(),
             Cvec3::new(TAU, 0.0, 0.0)
         );
         assert!(!Quat::from_scaled_axis(Cvec3::new(f32::NAN, 0.0, 0.0)).is_finite());
@@ -241,10 +244,10 @@ mod tests {
             .is_finite());
         assert!(!q.integrate(Cvec3::X, f32::INFINITY).is_finite());
         assert!(!q.integrate(Cvec3::X * 1e30, 1e30).is_finite());
-        assert!(!Quat::new(0.0, 0.0, 0.0, 0.0)
+        assert!(!Quat::from_wxyz(0.0, 0.0, 0.0, 0.0)
             .integrate(Cvec3::X, 0.01)
             .is_finite());
-        let doubled = Quat::new(2.0 * q.w, 2.0 * q.x, 0.0, 0.0);
+        let doubled = Quat::from_wxyz(2.0 * q.w, 2.0 * q.x, 0.0, 0.0);
         assert!(doubled.integrate(Cvec3::X, 0.0).angle_to(q) < 1e-7);
         assert!((doubled.integrate(Cvec3::X, 0.0).norm() - 1.0).abs() < 2.5e-7);
         // Backwards in time undoes a step forwards.

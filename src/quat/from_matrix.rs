@@ -66,13 +66,13 @@ impl Quat {
         // times 4 w (a positive factor the normalization removes), so no
         // square root is needed before it.
         let q = if w4 >= x4 && w4 >= y4 && w4 >= z4 {
-            Self::new(w4, m21 - m12, m02 - m20, m10 - m01)
+            Self::from_wxyz(w4, m21 - m12, m02 - m20, m10 - m01)
         } else if x4 >= y4 && x4 >= z4 {
-            Self::new(m21 - m12, x4, m01 + m10, m02 + m20)
+            Self::from_wxyz(m21 - m12, x4, m01 + m10, m02 + m20)
         } else if y4 >= z4 {
-            Self::new(m02 - m20, m01 + m10, y4, m12 + m21)
+            Self::from_wxyz(m02 - m20, m01 + m10, y4, m12 + m21)
         } else {
-            Self::new(m10 - m01, m02 + m20, m12 + m21, z4)
+            Self::from_wxyz(m10 - m01, m02 + m20, m12 + m21, z4)
         };
         q.normalize().cn()
     }

@@ -339,7 +339,7 @@ impl Quat {
     /// `a self + b other`, component-wise.
     #[inline]
     pub(super) fn weighted_sum(self, a: f32, other: Self, b: f32) -> Self {
-        Self::new(
+        Self::from_wxyz(
             a * self.w + b * other.w,
             a * self.x + b * other.x,
             a * self.y + b * other.y,
@@ -384,13 +384,13 @@ impl Quat {
     #[must_use]
     pub fn blend(entries: &[(Quat, f32)]) -> Self {
         let first = entries.first().map_or(Self::IDENTITY, |&(q, _)| q);
-        let mut sum = Self::new(0.0, 0.0, 0.0, 0.0);
+        let mut sum = Self::from_wxyz(0.0, 0.0, 0.0, 0.0);
         for &(q, weight) in entries {
             let weight = if q.dot(first) < 0.0 { -weight } else { weight };
             sum = sum.weighted_sum(1.0, q, weight);
         }
         // An empty slice, or weights that cancel: no rotation information.
-        if sum == Self::new(0.0, 0.0, 0.0, 0.0) {
+        if sum == Self::from_wxyz(0.0, 0.0, 0.0, 0.0) {
             return Self::IDENTITY;
         }
         sum.normalize()

@@ -89,7 +89,7 @@ impl Quat {
     /// assert!(q.pow(0.5).angle_to(Quat::from_rotation_x(0.6)) < 1e-6);
     /// assert_eq!(q.pow(0.0), Quat::IDENTITY);
     /// // Not unit, still a unit result:
-    /// assert!((Quat::new(0.0, 5.0, 0.0, 0.0).pow(0.3).norm() - 1.0).abs() < 1e-6);
+    /// assert!((Quat::from_wxyz(0.0, 5.0, 0.0, 0.0).pow(0.3).norm() - 1.0).abs() < 1e-6);
     /// ```
     // Inlined across crates on 64-bit desktop targets, where the call
     // costs as much as a share of the work; one out-of-line copy elsewhere
@@ -124,7 +124,7 @@ mod tests {
 
     #[test]
     fn pow_of_pure_real_negative_turns_about_x() {
-        let q = Quat::new(-1.0, 0.0, 0.0, 0.0).pow(0.5);
+        let q = Quat::from_wxyz(-1.0, 0.0, 0.0, 0.0).pow(0.5);
         assert!((q.w).abs() < 1e-7);
         assert_eq!((q.x, q.y, q.z), (1.0, 0.0, 0.0));
     }

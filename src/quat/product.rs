@@ -26,7 +26,7 @@ pub(super) fn hamilton(a: Quat, b: Quat) -> Quat {
 ))]
 #[inline(always)]
 fn by_formula(a: Quat, b: Quat) -> Quat {
-    Quat::new(
+    Quat::from_wxyz(
         a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
         a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
         a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
@@ -71,7 +71,7 @@ fn by_lanes(a: Quat, b: Quat) -> Quat {
         r = _mm_add_ps(r, _mm_mul_ps(_mm_set1_ps(a.x), _mm_xor_ps(b_xwzy, signs_x)));
         r = _mm_add_ps(r, _mm_mul_ps(_mm_set1_ps(a.y), _mm_xor_ps(b_yzwx, signs_y)));
         r = _mm_add_ps(r, _mm_mul_ps(_mm_set1_ps(a.z), _mm_xor_ps(b_zyxw, signs_z)));
-        Quat::new(
+        Quat::from_wxyz(
             _mm_cvtss_f32(r),
             _mm_cvtss_f32(_mm_shuffle_ps::<0b01_01_01_01>(r, r)),
             _mm_cvtss_f32(_mm_shuffle_ps::<0b10_10_10_10>(r, r)),
@@ -95,12 +95,12 @@ mod tests {
 
     #[test]
     fn by_lanes_is_by_formula_bit_for_bit() {
-        let q = Quat::new(0.0, 1.0, 2.0, 3.0);
+        let q = Quat::from_wxyz(0.0, 1.0, 2.0, 3.0);
         assert!(same(q, q) && same(Quat::NAN, Quat::NAN));
-        assert!(!same(q, Quat::new(-0.0, 1.0, 2.0, 3.0)));
+        assert!(!same(q, Quat::from_wxyz(-0.0, 1.0, 2.0, 3.0)));
         assert!(!same(
             Quat::NAN,
-            Quat::new(f32::NAN, 1.0, f32::NAN, f32::NAN)
+            Quat::from_wxyz(f32::NAN, 1.0, f32::NAN, f32::NAN)
         ));
         let mut rng = rand::rngs::StdRng::seed_from_u64(7);
         let special = [
@@ -123,7 +123,7 @@ mod tests {
         };
         for _ in 0..200_000 {
             let mut q = || {
-                Quat::new(
+                Quat::from_wxyz(
                     component(&mut rng),
                     component(&mut rng),
                     component(&mut rng),

@@ -161,7 +161,7 @@ pub(super) mod tests {
     /// centre).
     pub(in crate::quat) fn unit(rng: &mut impl Rng) -> Quat {
         loop {
-            let q = Quat::new(
+            let q = Quat::from_wxyz(
                 rng.random_range(-1.0..1.0),
                 rng.random_range(-1.0..1.0),
                 rng.random_range(-1.0..1.0),
@@ -215,7 +215,7 @@ pub(super) mod tests {
     pub(in crate::quat) fn rare_pairs() -> [(Quat, Quat); 8] {
         let (a, b) = ordinary_pair();
         let near = a * Quat::from_rotation_z(2.0 * SMALL_ANGLE * 0.9);
-        let huge = Quat::new(1e5, 0.0, 0.0, 0.0);
+        let huge = Quat::from_wxyz(1e5, 0.0, 0.0, 0.0);
         [
             (a, a),
             (a, -a),
@@ -224,7 +224,7 @@ pub(super) mod tests {
             (huge, huge * Quat::from_rotation_x(1.0)),
             (huge, b),
             (Quat::NAN, b),
-            (a, Quat::new(f32::INFINITY, 0.0, 0.0, 0.0)),
+            (a, Quat::from_wxyz(f32::INFINITY, 0.0, 0.0, 0.0)),
         ]
     }
 

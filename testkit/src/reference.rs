@@ -14,7 +14,7 @@ pub fn to_f64(q: Quat) -> na::Quaternion<f64> {
 
 /// `q` rounded to f32.
 pub fn to_f32(q: na::Quaternion<f64>) -> Quat {
-    Quat::new(q.w as f32, q.i as f32, q.j as f32, q.k as f32)
+    Quat::from_wxyz(q.w as f32, q.i as f32, q.j as f32, q.k as f32)
 }
 
 /// `v` in f64, exactly.

@@ -25,7 +25,7 @@ use rigtform_testkit::{pow64, slerp64, Draws};
 type Slerp = fn([f32; 4], [f32; 4], f32) -> [f32; 4];
 
 fn rigtform_slerp(a: [f32; 4], b: [f32; 4], t: f32) -> [f32; 4] {
-    rig_quat(a).slerp(rig_quat(b), t).to_array()
+    rig_quat(a).slerp(rig_quat(b), t).to_wxyz()
 }
 fn glam_slerp(a: [f32; 4], b: [f32; 4], t: f32) -> [f32; 4] {
     let q = glam_quat(a).slerp(glam_quat(b), t);
@@ -64,7 +64,7 @@ fn to64(q: [f32; 4]) -> na::Quaternion<f64> {
 }
 
 fn to32(q: na::Quaternion<f64>) -> [f32; 4] {
-    rigtform_testkit::to_f32(q).to_array()
+    rigtform_testkit::to_f32(q).to_wxyz()
 }
 
 /// The angle between two rotations given as f32 and f64 quaternions.
@@ -445,7 +445,7 @@ trait IntoArray {
 }
 impl IntoArray for rigtform::Quat {
     fn into_array(self) -> [f32; 4] {
-        self.to_array()
+        self.to_wxyz()
     }
 }
 

@@ -152,9 +152,9 @@ fn main() -> ! {
         })
     });
     t.check("normalize_is_unit (edge grid)", || {
-        let zero = Quat::new(0.0, 0.0, 0.0, 0.0);
+        let zero = Quat::from_wxyz(0.0, 0.0, 0.0, 0.0);
         // Plus one made of subnormals only, whose squares underflow.
-        let tiny = Quat::new(1e-45, -1e-45, 0.0, 1e-40);
+        let tiny = Quat::from_wxyz(1e-45, -1e-45, 0.0, 1e-40);
         each(
             some_edge_quats()
                 .filter(|q| q.is_finite() && *q != zero)
@@ -175,7 +175,7 @@ fn main() -> ! {
             some_edge_quats()
                 .filter(|q| !q.is_finite())
                 .map(|q| (q, 0.5))
-                .chain(finite_edges().map(|w| (Quat::new(w, 0.0, 1.0, 0.0), f32::NAN))),
+                .chain(finite_edges().map(|w| (Quat::from_wxyz(w, 0.0, 1.0, 0.0), f32::NAN))),
             |(q, alpha)| laws::pow_of_non_finite_is_nan(q, alpha),
         )
     });

@@ -13,8 +13,8 @@ use rigtform::accuracy::{
 use rigtform::{Cvec3, EulerRot, Matrix4, Quat};
 
 fn dot64(a: Quat, b: Quat) -> f64 {
-    let [aw, ax, ay, az] = a.to_array().map(f64::from);
-    let [bw, bx, by, bz] = b.to_array().map(f64::from);
+    let [ax, ay, az, aw] = a.to_array().map(f64::from);
+    let [bx, by, bz, bw] = b.to_array().map(f64::from);
     aw * bw + ax * bx + ay * by + az * bz
 }
 

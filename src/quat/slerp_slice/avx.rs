@@ -28,7 +28,7 @@ fn pair(low: __m128, high: __m128) -> __m256 {
     unsafe { _mm256_insertf128_ps::<1>(_mm256_castps128_ps256(low), high) }
 }
 
-/// The quaternion at `q` in a register, `w` in lane 0.
+/// The quaternion at `q` in a register, `x` in lane 0.
 #[allow(unsafe_code)]
 #[inline(always)]
 fn load_quat(q: &Quat) -> __m128 {
@@ -37,7 +37,7 @@ fn load_quat(q: &Quat) -> __m128 {
     unsafe { _mm_loadu_ps((q as *const Quat).cast::<f32>()) }
 }
 
-/// The register's lanes to the quaternion at `q`, lane 0 to `w`.
+/// The register's lanes to the quaternion at `q`, lane 0 to `x`.
 #[allow(unsafe_code)]
 #[inline(always)]
 fn store_quat(v: __m128, q: &mut Quat) {
@@ -186,11 +186,12 @@ impl Isa for Avx {
             let t1 = _mm256_unpackhi_ps(r[0], r[1]);
             let t2 = _mm256_unpacklo_ps(r[2], r[3]);
             let t3 = _mm256_unpackhi_ps(r[2], r[3]);
+            // x, y, z, w in memory; returned w first.
             [
+                ps(_mm256_unpackhi_pd(pd(t1), pd(t3))),
                 ps(_mm256_unpacklo_pd(pd(t0), pd(t2))),
                 ps(_mm256_unpackhi_pd(pd(t0), pd(t2))),
                 ps(_mm256_unpacklo_pd(pd(t1), pd(t3))),
-                ps(_mm256_unpackhi_pd(pd(t1), pd(t3))),
             ]
         }
     }
@@ -198,10 +199,10 @@ impl Isa for Avx {
     fn store<T: Slerped>([w, x, y, z]: [__m256; 4], values: &mut [T]) {
         let q = unsafe {
             let (pd, ps) = (_mm256_castps_pd, _mm256_castpd_ps);
-            let u0 = _mm256_unpacklo_ps(w, x);
-            let u1 = _mm256_unpackhi_ps(w, x);
-            let v0 = _mm256_unpacklo_ps(y, z);
-            let v1 = _mm256_unpackhi_ps(y, z);
+            let u0 = _mm256_unpacklo_ps(x, y);
+            let u1 = _mm256_unpackhi_ps(x, y);
+            let v0 = _mm256_unpacklo_ps(z, w);
+            let v1 = _mm256_unpackhi_ps(z, w);
             [
                 ps(_mm256_unpacklo_pd(pd(u0), pd(v0))),
                 ps(_mm256_unpackhi_pd(pd(u0), pd(v0))),

@@ -145,28 +145,28 @@ impl Isa for Sse2 {
         for (r, value) in r.iter_mut().zip(values) {
             *r = unsafe { _mm_loadu_ps((value.rotation() as *const Quat).cast::<f32>()) };
         }
-        // The four quaternions to one register per component, lanes in
-        // their order.
+        // The four quaternions (x, y, z, w in memory) to one register per
+        // component, lanes in their order, returned w first.
         unsafe {
             let t0 = _mm_unpacklo_ps(r[0], r[1]);
             let t1 = _mm_unpackhi_ps(r[0], r[1]);
             let t2 = _mm_unpacklo_ps(r[2], r[3]);
             let t3 = _mm_unpackhi_ps(r[2], r[3]);
             [
+                _mm_movehl_ps(t3, t1),
                 _mm_movelh_ps(t0, t2),
                 _mm_movehl_ps(t2, t0),
                 _mm_movelh_ps(t1, t3),
-                _mm_movehl_ps(t3, t1),
             ]
         }
     }
     #[inline(always)]
     fn store<T: Slerped>([w, x, y, z]: [__m128; 4], values: &mut [T]) {
         let q = unsafe {
-            let u0 = _mm_unpacklo_ps(w, x);
-            let u1 = _mm_unpackhi_ps(w, x);
-            let v0 = _mm_unpacklo_ps(y, z);
-            let v1 = _mm_unpackhi_ps(y, z);
+            let u0 = _mm_unpacklo_ps(x, y);
+            let u1 = _mm_unpackhi_ps(x, y);
+            let v0 = _mm_unpacklo_ps(z, w);
+            let v1 = _mm_unpackhi_ps(z, w);
             [
                 _mm_movelh_ps(u0, v0),
                 _mm_movehl_ps(v0, u0),

@@ -19,7 +19,7 @@
 //! it together, stage by stage, so that while one block's lanes wait for a
 //! result the others' have work. The compiler vectorizes the portable lanes
 //! too, but one block at a time, and it moves the quaternions between their
-//! layout (`w, x, y, z` of one, then the next) and one register per
+//! layout (`x, y, z, w` of one, then the next) and one register per
 //! component with more shuffles, blends and permutes than the transposes
 //! here: 48 per 4 pairs in its SSE2 loop against 95 per 16 here, about 85
 //! per 8 pairs in its AVX2 loop against 60 per 16 here (counted in the

@@ -26,7 +26,7 @@ pub struct SampleError {
 /// BROAD's errors of `estimate` against `truth` (scalar first), in degrees,
 /// evaluated in f64.
 pub fn sample_error(estimate: Quat, truth: [f64; 4]) -> SampleError {
-    let e = estimate.to_array().map(f64::from);
+    let e = estimate.to_wxyz().map(f64::from);
     let n = (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3]).sqrt();
     let e = e.map(|c| c / n);
     // estimate * conj(truth)
@@ -132,7 +132,7 @@ mod tests {
     /// (this tests the metric, not the crate's kernels).
     fn rotation(axis: [f64; 3], angle: f64) -> Quat {
         let (s, c) = (angle / 2.0).sin_cos();
-        Quat::new(
+        Quat::from_wxyz(
             c as f32,
             (s * axis[0]) as f32,
             (s * axis[1]) as f32,
@@ -143,7 +143,7 @@ mod tests {
     #[test]
     fn metric_splits_heading_from_inclination() {
         let truth = rotation([1.0, 0.0, 0.0], 0.3);
-        let t = truth.to_array().map(f64::from);
+        let t = truth.to_wxyz().map(f64::from);
         // An error about earth's vertical is all heading...
         let e = sample_error(rotation([0.0, 0.0, 1.0], 0.1) * truth, t);
         assert!((e.heading - 0.1f64.to_degrees()).abs() < 1e-4, "{e:?}");

@@ -236,7 +236,7 @@ fn print_table(trials: &[Trial]) {
 
 /// Roll, pitch and yaw (z-y-x Euler angles) of `q`, in degrees.
 fn euler_degrees(q: Quat) -> [f64; 3] {
-    let [w, x, y, z] = q.to_array().map(f64::from);
+    let [w, x, y, z] = q.to_wxyz().map(f64::from);
     let roll = (2.0 * (w * x + y * z)).atan2(1.0 - 2.0 * (x * x + y * y));
     let pitch = (2.0 * (w * y - z * x)).clamp(-1.0, 1.0).asin();
     let yaw = (2.0 * (w * z + x * y)).atan2(1.0 - 2.0 * (y * y + z * z));

@@ -60,8 +60,8 @@ fn parse(text: &str) -> Result<(Vec<Quat>, Vec<Quat>), String> {
         let [w6, x6, y6, z6, w9, x9, y9, z9] = v[..] else {
             return Err(format!("VQF output line {}: not 8 values", i + 2));
         };
-        six.push(Quat::new(w6, x6, y6, z6));
-        nine.push(Quat::new(w9, x9, y9, z9));
+        six.push(Quat::from_wxyz(w6, x6, y6, z6));
+        nine.push(Quat::from_wxyz(w9, x9, y9, z9));
     }
     Ok((six, nine))
 }
@@ -75,7 +75,7 @@ mod tests {
         let text = "w6,x6,y6,z6,w9,x9,y9,z9\n1,0,0,0,0.5,0.5,0.5,0.5\n";
         let (six, nine) = parse(text).unwrap();
         assert_eq!(six, [Quat::IDENTITY]);
-        assert_eq!(nine, [Quat::new(0.5, 0.5, 0.5, 0.5)]);
+        assert_eq!(nine, [Quat::from_wxyz(0.5, 0.5, 0.5, 0.5)]);
         assert!(parse("w,x,y,z\n1,0,0,0\n").is_err());
         assert!(parse("w6,x6,y6,z6,w9,x9,y9,z9\n1,0,0,0\n").is_err());
         assert!(parse("w6,x6,y6,z6,w9,x9,y9,z9\n1,0,0,0,1,0,0,x\n").is_err());
