@@ -149,6 +149,15 @@ pub const RENORMALIZED_CHAIN_NORM_ERROR: f32 = 1.5e-7; // 1.192e-7 (plain produc
 /// (8 such results). The check compares the squared norm with 1 within
 /// twice this value.
 pub const IS_NORMALIZED_TOLERANCE: f32 = backend::IS_NORMALIZED_TOLERANCE;
+/// How far from rigid a matrix may be for
+/// [`RigTForm::try_from`](crate::RigTForm#impl-TryFrom%3CMatrix4%3E-for-RigTForm)
+/// to take it: the largest entry of `|M^T M - I|` of its 3x3 block and of
+/// its last row's distance from `[0, 0, 0, 1]`. A chosen tolerance, not a
+/// measured error: several hundred times the orthonormality error of the
+/// f32 rotation matrices [`Matrix4::from_quat`](crate::Matrix4::from_quat)
+/// makes, so that products of a few such matrices pass, while a scale of
+/// 1.001 or a shear of 0.001 is refused.
+pub const RIGID_TOLERANCE: f32 = 1e-4;
 /// Angle error of [`Quat::from_matrix`](crate::Quat::from_matrix) for the
 /// f32 rotation matrices of random unit quaternions, against the exact
 /// rotation of the same f32 entries, half turns included.

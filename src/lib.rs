@@ -142,7 +142,7 @@ pub mod kani_kernels {
 
 pub use matrix::Matrix4;
 pub use quat::{EulerRot, Quat};
-pub use rigtform::RigTForm;
+pub use rigtform::{NotRigid, RigTForm};
 pub use vec::{Cvec3, Cvec4};
 
 /// The README's Rust example, compiled and run as a doc test.

@@ -7,19 +7,24 @@
 //! `nlerp`, `blend`), `quat/exp_log.rs` (the exponential and logarithm
 //! maps, and gyro integration built on them), `quat/euler.rs` (Euler
 //! angles), `quat/from_matrix.rs` (the rotation of a rotation matrix),
-//! `quat/rotation_arc.rs` (the shortest rotation between two directions)
-//! and `quat/catmull_rom.rs` (splines through many keyframes).
+//! `quat/rotation_arc.rs` (the shortest rotation between two directions),
+//! `quat/catmull_rom.rs` (splines through many keyframes),
+//! `quat/arithmetic.rs` (sums and scaling, as a 4-vector),
+//! `quat/towards.rs` (`slerp_long`, `rotate_towards`) and
+//! `quat/other_names.rs` (glam's and nalgebra's names for these methods).
 
 use core::ops::{Mul, MulAssign, Neg};
 
 use crate::float::{self, scale_for_squares};
 use crate::vec::{Cvec3, Cvec4};
 
+mod arithmetic;
 pub(crate) mod catmull_rom;
 mod euler;
 mod exp_log;
 mod from_matrix;
 mod interpolate;
+mod other_names;
 mod power;
 mod product;
 mod rotation_arc;
@@ -29,6 +34,7 @@ mod rotation_arc;
 ))]
 mod slerp_f64;
 mod slerp_slice;
+mod towards;
 #[cfg(all(
     target_arch = "x86_64",
     target_feature = "sse2",
@@ -368,8 +374,6 @@ impl Quat {
     /// assert!((q * q.inv()).angle_to(Quat::IDENTITY) < 1e-6);
     /// assert_eq!(q.inv().inv(), q);
     /// ```
-    #[doc(alias = "inverse")]
-    #[doc(alias = "conjugate")]
     #[inline]
     #[must_use]
     pub fn inv(self) -> Self {
@@ -395,7 +399,6 @@ impl Quat {
     /// ```
     /// assert_eq!(rigtform::Quat::from_wxyz(1.0, 1.0, 1.0, 1.0).norm_squared(), 4.0);
     /// ```
-    #[doc(alias = "length_squared")]
     #[inline]
     #[must_use]
     pub fn norm_squared(self) -> f32 {
@@ -410,7 +413,6 @@ impl Quat {
     /// assert_eq!(Quat::from_wxyz(0.0, 3.0, 0.0, 4.0).norm(), 5.0);
     /// assert_eq!(Quat::from_wxyz(f32::MAX, 0.0, 0.0, 0.0).norm(), f32::MAX);
     /// ```
-    #[doc(alias = "length")]
     #[inline]
     #[must_use]
     pub fn norm(self) -> f32 {
@@ -539,7 +541,6 @@ impl Quat {
     /// assert!((a.angle_to(b) - 0.75).abs() < 1e-6);
     /// assert_eq!(b.angle_to(-b), 0.0);
     /// ```
-    #[doc(alias = "angle_between")]
     #[must_use]
     pub fn angle_to(self, other: Self) -> f32 {
         (other * self.inv()).to_axis_angle().1

@@ -1,8 +1,10 @@
 //! [`RigTForm`]: a rigid body transform kept as a translation and a rotation
 //! quaternion, as in the notes' "Rbt data structure", "rbt * rbt", "inv
 //! operator" and "rbt Interpolation"; `rigtform/look_at.rs` builds an eye
-//! frame from a point and a target, and `rigtform/catmull_rom.rs` holds
-//! the spline through many keyframes.
+//! frame from a point and a target, `rigtform/catmull_rom.rs` holds
+//! the spline through many keyframes, and `rigtform/other_names.rs` glam's
+//! and nalgebra's names, `RigTForm * Cvec3` and the rigid transform of a
+//! matrix.
 
 use core::ops::{Mul, MulAssign};
 
@@ -11,6 +13,9 @@ use crate::vec::{Cvec3, Cvec4};
 
 mod catmull_rom;
 mod look_at;
+mod other_names;
+
+pub use other_names::NotRigid;
 
 /// A rigid body transform `A = T R`: first rotate by `r`, then translate by
 /// `t`. As a matrix, `[[r, t], [0, 1]]`.
@@ -150,7 +155,6 @@ impl RigTForm {
     /// let i = a * a.inv();
     /// assert!(i.t.norm() < 1e-6 && i.r.angle_to(Quat::IDENTITY) < 1e-6);
     /// ```
-    #[doc(alias = "inverse")]
     #[inline]
     #[must_use]
     pub fn inv(self) -> Self {
@@ -230,7 +234,6 @@ impl RigTForm {
     /// assert_eq!(mid.t, Cvec3::new(1.0, 0.0, 0.0));
     /// assert!(mid.r.angle_to(Quat::from_rotation_z(PI / 4.0)) < 1e-6);
     /// ```
-    #[doc(alias = "lerp")]
     #[doc(alias = "slerp")]
     // Inlined across crates on 64-bit desktop targets, where the call
     // costs as much as a share of the work; one out-of-line copy elsewhere

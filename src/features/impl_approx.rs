@@ -153,8 +153,8 @@ mod tests {
         every_component_counts(Cvec4::new(1.0, -2.0, 3.0, 0.5), |a| {
             Cvec4::new(a[0], a[1], a[2], a[3])
         });
-        every_component_counts(Quat::from_wxyz(0.5, -0.5, 0.5, 0.5), |a| {
-            Quat::from_wxyz(a[0], a[1], a[2], a[3])
+        every_component_counts(Quat::from_xyzw(0.5, -0.5, 0.5, 0.5), |a| {
+            Quat::from_array([a[0], a[1], a[2], a[3]])
         });
         every_component_counts(
             RigTForm::new(
@@ -164,7 +164,7 @@ mod tests {
             |a| {
                 RigTForm::new(
                     Cvec3::new(a[0], a[1], a[2]),
-                    Quat::from_wxyz(a[3], a[4], a[5], a[6]),
+                    Quat::from_xyzw(a[3], a[4], a[5], a[6]),
                 )
             },
         );

@@ -75,7 +75,7 @@ mod tests {
         let want: [f32; 16] = core::array::from_fn(|i| i as f32);
         assert_eq!(floats(&m), want, "column-major");
         let s = Smoother::new(Quat::from_wxyz(1.0, 2.0, 3.0, 4.0), 5.0);
-        assert_eq!(floats(&s), [1.0, 2.0, 3.0, 4.0, 5.0]);
+        assert_eq!(floats(&s), [2.0, 3.0, 4.0, 1.0, 5.0]);
         let p = FilterParams::DEFAULT;
         let f = floats(&p);
         assert_eq!((f[0], f[1]), (p.gravity, p.tau_acc));

@@ -4,8 +4,12 @@
 mod impl_approx;
 #[cfg(feature = "bytemuck")]
 mod impl_bytemuck;
+#[cfg(feature = "glam")]
+mod impl_glam;
 #[cfg(feature = "mint")]
 mod impl_mint;
+#[cfg(feature = "nalgebra")]
+mod impl_nalgebra;
 #[cfg(feature = "serde")]
 mod impl_serde;
 

@@ -41,7 +41,6 @@ impl Quat {
     /// let back = Quat::from_matrix(Matrix4::from_quat(q));
     /// assert!(back.angle_to(q) < 1e-6);
     /// ```
-    #[doc(alias = "from_mat4")]
     #[doc(alias = "from_rotation_matrix")]
     #[must_use]
     pub fn from_matrix(m: Matrix4) -> Self {

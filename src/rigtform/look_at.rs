@@ -44,8 +44,6 @@ impl RigTForm {
     /// // The eye's x axis stays horizontal.
     /// assert!(eye.transform_vector(Cvec3::X).y.abs() < 1e-6);
     /// ```
-    #[doc(alias = "look_at_rh")]
-    #[doc(alias = "face_towards")]
     #[must_use]
     pub fn look_at(eye: Cvec3, target: Cvec3, up: Cvec3) -> Self {
         if !(eye.is_finite() && target.is_finite() && up.is_finite()) {

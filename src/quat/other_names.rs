@@ -1,0 +1,343 @@
+//! glam's and nalgebra's names for [`Quat`]'s operations, so that their
+//! users' first spellings compile or lead to the crate's. Where the other
+//! crate's name is simply another word for the same thing (`length`,
+//! `conjugate`, `angle_between`), it is a method here too; where the notes
+//! have a name of their own (`inv`, `nlerp`, `pow`), the other name is a
+//! deprecated method whose warning names the notes' one.
+//!
+//! Every method here means what it means in glam 0.34 or nalgebra 0.35
+//! (tests below hold them against those crates).
+
+use super::{EulerRot, Quat};
+use crate::matrix::Matrix4;
+use crate::vec::Cvec3;
+
+impl Quat {
+    /// The conjugate `[w, -x, -y, -z]`, glam's and nalgebra's name: the same
+    /// as [`inv`](Self::inv), which is the inverse of a unit quaternion.
+    /// Exact.
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let q = Quat::from_rotation_x(0.3);
+    /// assert_eq!(q.conjugate(), q.inv());
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn conjugate(self) -> Self {
+        self.inv()
+    }
+
+    /// The norm, glam's name for [`norm`](Self::norm) (same accuracy).
+    ///
+    /// ```
+    /// assert_eq!(rigtform::Quat::from_xyzw(0.0, 3.0, 0.0, 4.0).length(), 5.0);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn length(self) -> f32 {
+        self.norm()
+    }
+
+    /// The squared norm, glam's name for [`norm_squared`](Self::norm_squared).
+    ///
+    /// ```
+    /// assert_eq!(rigtform::Quat::IDENTITY.length_squared(), 1.0);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn length_squared(self) -> f32 {
+        self.norm_squared()
+    }
+
+    /// The angle in [0, pi] between two rotations, glam's name for
+    /// [`angle_to`](Self::angle_to) (same preconditions and accuracy).
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let (a, b) = (Quat::from_rotation_x(0.25), Quat::from_rotation_x(1.0));
+    /// assert_eq!(a.angle_between(b), a.angle_to(b));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn angle_between(self, other: Self) -> f32 {
+        self.angle_to(other)
+    }
+
+    /// The rotation angle in [0, pi], nalgebra's `UnitQuaternion::angle`:
+    /// the angle of [`to_axis_angle`](Self::to_axis_angle) (same
+    /// preconditions and accuracy).
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// assert!((Quat::from_rotation_y(-2.0).angle() - 2.0).abs() < 1e-6);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn angle(self) -> f32 {
+        self.to_axis_angle().1
+    }
+
+    /// The rotation that takes `self` to `other`, `other * self.inv()`:
+    /// nalgebra's `rotation_to`.
+    ///
+    /// # Preconditions
+    ///
+    /// Unit quaternions.
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let (a, b) = (Quat::from_rotation_x(0.2), Quat::from_rotation_y(0.7));
+    /// assert!((a.rotation_to(b) * a).angle_to(b) < 1e-6);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn rotation_to(self, other: Self) -> Self {
+        other * self.inv()
+    }
+
+    /// The vector part, glam's name for [`vector`](Self::vector).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// assert_eq!(Quat::from_xyzw(1.0, 2.0, 3.0, 4.0).xyz(), Cvec3::new(1.0, 2.0, 3.0));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn xyz(self) -> Cvec3 {
+        self.vector()
+    }
+
+    /// `self * v`, the rotated vector: glam's name.
+    ///
+    /// # Preconditions
+    ///
+    /// As `Quat * Cvec3`: `self` is a unit quaternion.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::from_rotation_z(0.5);
+    /// assert_eq!(q.mul_vec3(Cvec3::X), q * Cvec3::X);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn mul_vec3(self, v: Cvec3) -> Cvec3 {
+        self * v
+    }
+
+    /// `self * other`, the Hamilton product: glam's name.
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let (a, b) = (Quat::from_rotation_x(0.2), Quat::from_rotation_y(0.7));
+    /// assert_eq!(a.mul_quat(b), a * b);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn mul_quat(self, other: Self) -> Self {
+        self * other
+    }
+
+    /// glam's and nalgebra's `inverse`: the notes call it `inv`.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::Quat;
+    /// let q = Quat::from_rotation_x(0.3);
+    /// assert_eq!(q.inverse(), q.inv());
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "the notes' name is `inv`: use `Quat::inv` (the conjugate, the inverse of a unit quaternion)"
+    )]
+    #[inline]
+    #[must_use]
+    pub fn inverse(self) -> Self {
+        self.inv()
+    }
+
+    /// glam's `lerp` (sign-aligned, normalized): here `nlerp`.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::Quat;
+    /// let (a, b) = (Quat::from_rotation_x(0.2), Quat::from_rotation_x(0.6));
+    /// assert_eq!(a.lerp(b, 0.5), a.nlerp(b, 0.5));
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "a normalized, sign-aligned lerp is `Quat::nlerp` here (and `Quat::slerp` the spherical one)"
+    )]
+    #[inline]
+    #[must_use]
+    pub fn lerp(self, other: Self, alpha: f32) -> Self {
+        self.nlerp(other, alpha)
+    }
+
+    /// nalgebra's `powf`: the notes' `pow`.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::Quat;
+    /// let q = Quat::from_rotation_x(1.2);
+    /// assert_eq!(q.powf(0.5), q.pow(0.5));
+    /// ```
+    #[deprecated(since = "0.1.0", note = "the notes' name is `pow`: use `Quat::pow`")]
+    #[inline]
+    #[must_use]
+    pub fn powf(self, alpha: f32) -> Self {
+        self.pow(alpha)
+    }
+
+    /// nalgebra's `UnitQuaternion::identity()`: the constant
+    /// [`Quat::IDENTITY`].
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// assert_eq!(rigtform::Quat::identity(), rigtform::Quat::IDENTITY);
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use the constant `Quat::IDENTITY`")]
+    #[inline]
+    #[must_use]
+    pub const fn identity() -> Self {
+        Self::IDENTITY
+    }
+
+    /// glam's `from_mat4(&m)`: here [`from_matrix`](Self::from_matrix),
+    /// which takes the matrix by value.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Matrix4, Quat};
+    /// let m = Matrix4::from_quat(Quat::from_rotation_y(0.4));
+    /// assert_eq!(Quat::from_mat4(&m), Quat::from_matrix(m));
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use `Quat::from_matrix(m)` (by value)")]
+    #[inline]
+    #[must_use]
+    pub fn from_mat4(m: &Matrix4) -> Self {
+        Self::from_matrix(*m)
+    }
+
+    /// nalgebra's `from_euler_angles(roll, pitch, yaw)`: the rotation
+    /// `Rz(yaw) Ry(pitch) Rx(roll)`, which is
+    /// `Quat::from_euler(EulerRot::ZYX, yaw, pitch, roll)` here.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{EulerRot, Quat};
+    /// assert_eq!(
+    ///     Quat::from_euler_angles(0.1, 0.2, 0.3),
+    ///     Quat::from_euler(EulerRot::ZYX, 0.3, 0.2, 0.1)
+    /// );
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "use `Quat::from_euler(EulerRot::ZYX, yaw, pitch, roll)`: the order is in its first argument"
+    )]
+    #[inline]
+    #[must_use]
+    pub fn from_euler_angles(roll: f32, pitch: f32, yaw: f32) -> Self {
+        Self::from_euler(EulerRot::ZYX, yaw, pitch, roll)
+    }
+
+    /// nalgebra's `euler_angles()`: `(roll, pitch, yaw)`, which is
+    /// `to_euler(EulerRot::ZYX)` in reverse here.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{EulerRot, Quat};
+    /// let q = Quat::from_euler(EulerRot::ZYX, 0.3, 0.2, 0.1);
+    /// let (roll, pitch, yaw) = q.euler_angles();
+    /// assert_eq!((yaw, pitch, roll), q.to_euler(EulerRot::ZYX));
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "use `q.to_euler(EulerRot::ZYX)`, which returns (yaw, pitch, roll)"
+    )]
+    #[inline]
+    #[must_use]
+    pub fn euler_angles(self) -> (f32, f32, f32) {
+        let (yaw, pitch, roll) = self.to_euler(EulerRot::ZYX);
+        (roll, pitch, yaw)
+    }
+}
+
+#[cfg(test)]
+#[allow(deprecated)]
+mod tests {
+    use super::*;
+    use nalgebra as na;
+    use rand::{Rng, SeedableRng};
+
+    fn na_quat(q: Quat) -> na::UnitQuaternion<f32> {
+        na::UnitQuaternion::new_unchecked(na::Quaternion::new(q.w, q.x, q.y, q.z))
+    }
+
+    fn from_na(q: na::UnitQuaternion<f32>) -> Quat {
+        Quat::from_wxyz(q.w, q.i, q.j, q.k)
+    }
+
+    fn glam_quat(q: Quat) -> glam::Quat {
+        glam::Quat::from_array(q.to_array())
+    }
+
+    /// Each of glam's and nalgebra's names gives what it gives there.
+    #[test]
+    fn other_names_mean_what_they_mean_in_glam_and_nalgebra() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(29);
+        for _ in 0..10_000 {
+            let mut draw = || {
+                Quat::from_axis_angle(
+                    Cvec3::new(
+                        rng.random_range(-1.0..1.0),
+                        rng.random_range(-1.0..1.0),
+                        rng.random_range(-1.0..1.0),
+                    ),
+                    rng.random_range(-3.0..3.0),
+                )
+            };
+            let (a, b) = (draw(), draw());
+            let (ga, gb) = (glam_quat(a), glam_quat(b));
+            let (na_a, na_b) = (na_quat(a), na_quat(b));
+            assert_eq!(a.conjugate().to_array(), ga.conjugate().to_array());
+            assert_eq!(a.inverse().to_array(), ga.inverse().to_array());
+            assert!((a.length() - ga.length()).abs() < 1e-6);
+            assert!((a.length_squared() - ga.length_squared()).abs() < 1e-6);
+            assert!((a.angle_between(b) - ga.angle_between(gb)).abs() < 2e-3);
+            assert!((a.angle() - na_a.angle()).abs() < 1e-5);
+            assert!(a.rotation_to(b).angle_to(from_na(na_a.rotation_to(&na_b))) < 1e-5);
+            assert_eq!(a.xyz().to_array(), ga.xyz().to_array());
+            let v = Cvec3::new(1.0, -2.0, 0.5);
+            let gv = ga.mul_vec3(glam::Vec3::from_array(v.to_array()));
+            assert!((a.mul_vec3(v) - Cvec3::from_array(gv.to_array())).norm() < 1e-5);
+            assert!(
+                a.mul_quat(b)
+                    .angle_to(Quat::from_array(ga.mul_quat(gb).to_array()))
+                    < 1e-6
+            );
+            let t = rng.random_range(0.0..1.0);
+            assert!(
+                a.lerp(b, t)
+                    .angle_to(Quat::from_array(ga.lerp(gb, t).to_array()))
+                    < 1e-5
+            );
+            assert!(a.powf(t).angle_to(from_na(na_a.powf(t))) < 1e-5);
+            let (roll, pitch, yaw) = (
+                rng.random_range(-3.0..3.0),
+                rng.random_range(-1.5..1.5),
+                rng.random_range(-3.0..3.0),
+            );
+            let ours = Quat::from_euler_angles(roll, pitch, yaw);
+            let theirs = na::UnitQuaternion::from_euler_angles(roll, pitch, yaw);
+            assert!(ours.angle_to(from_na(theirs)) < 1e-5);
+            let (r, p, y) = ours.euler_angles();
+            let (nr, np, ny) = theirs.euler_angles();
+            assert!((r - nr).abs() < 1e-3 && (p - np).abs() < 1e-3 && (y - ny).abs() < 1e-3);
+            let m = Matrix4::from_quat(a);
+            let from_glam = glam::Quat::from_mat4(&glam::Mat4::from_cols_array(&m.to_cols_array()));
+            assert!(Quat::from_mat4(&m).angle_to(Quat::from_array(from_glam.to_array())) < 1e-5);
+        }
+        assert_eq!(Quat::identity().to_array(), glam::Quat::IDENTITY.to_array());
+    }
+}

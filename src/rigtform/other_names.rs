@@ -1,0 +1,424 @@
+//! glam's (`Affine3A`) and nalgebra's (`Isometry3`) names for
+//! [`RigTForm`]'s operations, and the few operations of theirs the notes
+//! do not name: `RigTForm * Cvec3`, the inverse transforms of points and
+//! vectors, `is_finite`, and the rigid transform of a [`Matrix4`]
+//! ([`NotRigid`] when it is none). Where the notes have a name of their
+//! own (`inv`, `interpolate`), the other name is a deprecated method whose
+//! warning names the notes' one.
+
+use core::fmt;
+use core::ops::Mul;
+
+use super::RigTForm;
+use crate::matrix::Matrix4;
+use crate::quat::Quat;
+use crate::vec::Cvec3;
+
+impl RigTForm {
+    /// The transform that rotates by `r`, then translates by `t`, glam's
+    /// `Affine3A::from_rotation_translation` (arguments in that order): the
+    /// same as [`RigTForm::new(t, r)`](Self::new).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let r = Quat::from_rotation_z(0.5);
+    /// assert_eq!(RigTForm::from_rotation_translation(r, Cvec3::X), RigTForm::new(Cvec3::X, r));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_rotation_translation(r: Quat, t: Cvec3) -> Self {
+        Self::new(t, r)
+    }
+
+    /// The point `p` taken back through the transform, `r^-1 (p - t)`:
+    /// nalgebra's `inverse_transform_point`, the same as
+    /// `self.inv().transform_point(p)` without composing the inverse.
+    ///
+    /// # Preconditions
+    ///
+    /// `r` is a unit quaternion.
+    ///
+    /// # Accuracy
+    ///
+    /// One rounding of the difference, then the rotation's error, at most
+    /// [`accuracy::ROTATE_MAX_REL_ERROR`](crate::accuracy::ROTATE_MAX_REL_ERROR)
+    /// times `|p - t|`.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let a = RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::from_rotation_y(0.7));
+    /// let p = Cvec3::new(-4.0, 0.5, 2.0);
+    /// assert!((a.inverse_transform_point(a.transform_point(p)) - p).norm() < 1e-5);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn inverse_transform_point(self, p: Cvec3) -> Cvec3 {
+        self.r.inv() * (p - self.t)
+    }
+
+    /// The vector `v` taken back through the rotation, `r^-1 v`:
+    /// nalgebra's `inverse_transform_vector`.
+    ///
+    /// # Preconditions
+    ///
+    /// `r` is a unit quaternion.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let a = RigTForm::new(Cvec3::new(9.0, 0.0, 0.0), Quat::from_rotation_z(0.7));
+    /// let v = Cvec3::new(1.0, 2.0, 0.0);
+    /// assert!((a.inverse_transform_vector(a.transform_vector(v)) - v).norm() < 1e-6);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn inverse_transform_vector(self, v: Cvec3) -> Cvec3 {
+        self.r.inv() * v
+    }
+
+    /// `true` if every component of `t` and `r` is finite.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, RigTForm};
+    /// assert!(RigTForm::IDENTITY.is_finite());
+    /// assert!(!RigTForm::from_translation(Cvec3::new(f32::INFINITY, 0.0, 0.0)).is_finite());
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn is_finite(self) -> bool {
+        self.t.is_finite() && self.r.is_finite()
+    }
+
+    /// `true` if any component of `t` or `r` is NaN.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// assert!(RigTForm::from_rotation(Quat::NAN).is_nan());
+    /// assert!(!RigTForm::IDENTITY.is_nan());
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn is_nan(self) -> bool {
+        let Cvec3 { x, y, z } = self.t;
+        x.is_nan() || y.is_nan() || z.is_nan() || self.r.is_nan()
+    }
+
+    /// glam's and nalgebra's `inverse`: the notes call it `inv`.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let a = RigTForm::new(Cvec3::X, Quat::from_rotation_y(0.3));
+    /// assert_eq!(a.inverse(), a.inv());
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "the notes' name is `inv`: use `RigTForm::inv`"
+    )]
+    #[inline]
+    #[must_use]
+    pub fn inverse(self) -> Self {
+        self.inv()
+    }
+
+    /// A `lerp` of two frames: here [`interpolate`](Self::interpolate)
+    /// (the translation lerped, the rotation slerped), as nalgebra's
+    /// `Isometry3::lerp_slerp`.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let (a, b) = (RigTForm::IDENTITY, RigTForm::new(Cvec3::X, Quat::from_rotation_z(1.0)));
+    /// assert_eq!(a.lerp(b, 0.5), a.interpolate(b, 0.5));
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "the notes' name is `interpolate`: use `RigTForm::interpolate` (lerp of t, slerp of r)"
+    )]
+    #[inline]
+    #[must_use]
+    pub fn lerp(self, other: Self, alpha: f32) -> Self {
+        self.interpolate(other, alpha)
+    }
+
+    /// nalgebra's `lerp_slerp`: here [`interpolate`](Self::interpolate).
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let (a, b) = (RigTForm::IDENTITY, RigTForm::new(Cvec3::X, Quat::from_rotation_z(1.0)));
+    /// assert_eq!(a.lerp_slerp(b, 0.5), a.interpolate(b, 0.5));
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "the notes' name is `interpolate`: use `RigTForm::interpolate`"
+    )]
+    #[inline]
+    #[must_use]
+    pub fn lerp_slerp(self, other: Self, alpha: f32) -> Self {
+        self.interpolate(other, alpha)
+    }
+
+    /// glam's `Affine3A::transform_point3`: here
+    /// [`transform_point`](Self::transform_point).
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Cvec3, RigTForm};
+    /// let a = RigTForm::from_translation(Cvec3::X);
+    /// assert_eq!(a.transform_point3(Cvec3::Y), a.transform_point(Cvec3::Y));
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use `RigTForm::transform_point`")]
+    #[inline]
+    #[must_use]
+    pub fn transform_point3(self, p: Cvec3) -> Cvec3 {
+        self.transform_point(p)
+    }
+
+    /// glam's `Affine3A::transform_vector3`: here
+    /// [`transform_vector`](Self::transform_vector).
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Cvec3, RigTForm};
+    /// let a = RigTForm::from_translation(Cvec3::X);
+    /// assert_eq!(a.transform_vector3(Cvec3::Y), Cvec3::Y);
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use `RigTForm::transform_vector`")]
+    #[inline]
+    #[must_use]
+    pub fn transform_vector3(self, v: Cvec3) -> Cvec3 {
+        self.transform_vector(v)
+    }
+
+    /// nalgebra's `Isometry3::identity()`: the constant
+    /// [`RigTForm::IDENTITY`].
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// assert_eq!(rigtform::RigTForm::identity(), rigtform::RigTForm::IDENTITY);
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use the constant `RigTForm::IDENTITY`")]
+    #[inline]
+    #[must_use]
+    pub const fn identity() -> Self {
+        Self::IDENTITY
+    }
+}
+
+impl Mul<Cvec3> for RigTForm {
+    type Output = Cvec3;
+
+    /// Applies the transform to a point: [`transform_point`](RigTForm::transform_point),
+    /// as nalgebra's `Isometry3 * Point3` and glam's
+    /// `Affine3A::transform_point3`. A direction is not translated: use
+    /// [`transform_vector`](RigTForm::transform_vector) for it (or a
+    /// [`Cvec4`](crate::Cvec4) with `w = 0`).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, RigTForm};
+    /// let a = RigTForm::from_translation(Cvec3::new(5.0, 0.0, 0.0));
+    /// assert_eq!(a * Cvec3::X, Cvec3::new(6.0, 0.0, 0.0));
+    /// assert_eq!(a.transform_vector(Cvec3::X), Cvec3::X);
+    /// ```
+    #[inline]
+    fn mul(self, p: Cvec3) -> Cvec3 {
+        self.transform_point(p)
+    }
+}
+
+/// The error of [`RigTForm::try_from`] a matrix (or, with the `glam`
+/// feature, a `glam::Affine3A`) that is not a rigid body transform: it
+/// scales, shears, mirrors or projects, or has a NaN or infinite entry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NotRigid {
+    /// How far the matrix is from rigid: the largest entry of
+    /// `|M^T M - I|` over its upper-left 3x3 block `M`, and of the last
+    /// row's distance from `[0, 0, 0, 1]`; infinite for a mirror (negative
+    /// determinant), NaN for a NaN or infinite entry.
+    pub deviation: f32,
+}
+
+impl fmt::Display for NotRigid {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "not a rigid body transform: the matrix is {} from rotation and translation (at most {} allowed)",
+            self.deviation,
+            crate::accuracy::RIGID_TOLERANCE
+        )
+    }
+}
+
+impl core::error::Error for NotRigid {}
+
+/// `|M^T M - I|`'s largest entry, and the last row's distance from
+/// `[0, 0, 0, 1]`; infinite for a negative determinant, NaN for a
+/// non-finite entry. Zero for an exact rotation and translation.
+fn rigid_deviation(m: Matrix4) -> f32 {
+    if !m.is_finite() {
+        return f32::NAN;
+    }
+    let [a, b, c, d] = m.cols;
+    let (a3, b3, c3) = (a.xyz(), b.xyz(), c.xyz());
+    if a3.cross(b3).dot(c3) < 0.0 {
+        return f32::INFINITY;
+    }
+    let gram = [
+        a3.dot(a3) - 1.0,
+        b3.dot(b3) - 1.0,
+        c3.dot(c3) - 1.0,
+        a3.dot(b3),
+        b3.dot(c3),
+        c3.dot(a3),
+        a.w,
+        b.w,
+        c.w,
+        d.w - 1.0,
+    ];
+    // NaN from an overflow of the dot products counts as not rigid.
+    gram.iter().fold(0.0f32, |worst, e| {
+        if e.abs() > worst || e.is_nan() {
+            e.abs()
+        } else {
+            worst
+        }
+    })
+}
+
+impl TryFrom<Matrix4> for RigTForm {
+    type Error = NotRigid;
+
+    /// The rigid body transform a matrix holds, the inverse of
+    /// [`Matrix4::from_rig_tform`]: its upper-left 3x3 block must be a
+    /// rotation (orthonormal columns within
+    /// [`accuracy::RIGID_TOLERANCE`](crate::accuracy::RIGID_TOLERANCE),
+    /// determinant positive) and its last row `[0, 0, 0, 1]` within the
+    /// same tolerance. The translation is the last column, exactly; the
+    /// rotation is [`Quat::from_matrix`]'s, normalized.
+    ///
+    /// # Accuracy
+    ///
+    /// The rotation within
+    /// [`accuracy::FROM_MATRIX_MAX_ANGLE_ERROR`](crate::accuracy::FROM_MATRIX_MAX_ANGLE_ERROR)
+    /// of the matrix's.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix4, Quat, RigTForm};
+    /// let a = RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::from_rotation_x(0.4));
+    /// let back = RigTForm::try_from(Matrix4::from(a)).unwrap();
+    /// assert_eq!(back.t, a.t);
+    /// assert!(back.r.angle_to(a.r) < 1e-6);
+    /// assert!(RigTForm::try_from(Matrix4::from_scale(Cvec3::new(2.0, 2.0, 2.0))).is_err());
+    /// ```
+    fn try_from(m: Matrix4) -> Result<Self, NotRigid> {
+        let deviation = rigid_deviation(m);
+        if deviation.is_nan() || deviation > crate::accuracy::RIGID_TOLERANCE {
+            return Err(NotRigid { deviation });
+        }
+        Ok(Self::new(m.cols[3].xyz(), Quat::from_matrix(m).normalize()))
+    }
+}
+
+#[cfg(test)]
+#[allow(deprecated)]
+mod tests {
+    use super::*;
+    use nalgebra as na;
+    use rand::{Rng, SeedableRng};
+
+    fn random(rng: &mut rand::rngs::StdRng) -> RigTForm {
+        let mut c = || rng.random_range(-10.0f32..10.0);
+        let t = Cvec3::new(c(), c(), c());
+        let r = Quat::from_axis_angle(Cvec3::new(c(), c(), c()), c());
+        RigTForm::new(t, r)
+    }
+
+    fn na_iso(a: RigTForm) -> na::Isometry3<f32> {
+        na::Isometry3::from_parts(
+            na::Translation3::new(a.t.x, a.t.y, a.t.z),
+            na::UnitQuaternion::new_unchecked(na::Quaternion::new(a.r.w, a.r.x, a.r.y, a.r.z)),
+        )
+    }
+
+    /// Each name means what it means in nalgebra's `Isometry3`.
+    #[test]
+    fn other_names_agree_with_nalgebra() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(30);
+        for _ in 0..10_000 {
+            let (a, b) = (random(&mut rng), random(&mut rng));
+            let iso = na_iso(a);
+            let p = Cvec3::new(3.0, -1.0, 0.25);
+            let np = na::Point3::new(p.x, p.y, p.z);
+            let close =
+                |u: Cvec3, v: [f32; 3]| (u - Cvec3::from_array(v)).norm() < 1e-4 * (1.0 + u.norm());
+            assert!(close(a * p, (iso * np).coords.into()));
+            assert!(close(
+                a.inverse_transform_point(p),
+                iso.inverse_transform_point(&np).coords.into()
+            ));
+            let nv = na::Vector3::new(p.x, p.y, p.z);
+            assert!(close(
+                a.inverse_transform_vector(p),
+                iso.inverse_transform_vector(&nv).into()
+            ));
+            let t = rng.random_range(0.0..1.0);
+            let theirs = iso.lerp_slerp(&na_iso(b), t);
+            let ours = a.lerp(b, t);
+            assert!(close(ours.t, theirs.translation.vector.into()));
+            assert_eq!(a.lerp_slerp(b, t), a.interpolate(b, t));
+            assert_eq!(a.inverse(), a.inv());
+            assert_eq!(a.transform_point3(p), a.transform_point(p));
+            assert_eq!(a.transform_vector3(p), a.transform_vector(p));
+            assert_eq!(RigTForm::from_rotation_translation(a.r, a.t), a);
+        }
+        assert_eq!(RigTForm::identity(), RigTForm::IDENTITY);
+    }
+
+    #[test]
+    fn matrices_of_rig_tforms_come_back() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(31);
+        for _ in 0..10_000 {
+            let a = random(&mut rng);
+            let back = RigTForm::try_from(Matrix4::from(a)).unwrap();
+            assert_eq!(
+                back.t.to_array().map(f32::to_bits),
+                a.t.to_array().map(f32::to_bits)
+            );
+            assert!(back.r.angle_to(a.r) <= 2.0 * crate::accuracy::FROM_MATRIX_MAX_ANGLE_ERROR);
+        }
+    }
+
+    #[test]
+    fn matrices_that_are_not_rigid_are_refused() {
+        let mut shear = Matrix4::IDENTITY;
+        shear.cols[1].x = 0.01;
+        let mut projective = Matrix4::IDENTITY;
+        projective.cols[2].w = -1.0;
+        let mut nan = Matrix4::IDENTITY;
+        nan.cols[0].y = f32::NAN;
+        let mut huge = Matrix4::IDENTITY;
+        huge.cols[0].x = f32::MAX;
+        let cases = [
+            Matrix4::from_scale(Cvec3::new(1.0, 1.0, 1.001)),
+            Matrix4::from_scale(Cvec3::new(1.0, 1.0, -1.0)),
+            shear,
+            projective,
+            nan,
+            huge,
+            Matrix4::from_cols_array(&[0.0; 16]),
+        ];
+        for m in cases {
+            let e = RigTForm::try_from(m).unwrap_err();
+            assert!(
+                e.deviation.is_nan() || e.deviation > crate::accuracy::RIGID_TOLERANCE,
+                "{m:?}"
+            );
+            assert!(std::format!("{e}").starts_with("not a rigid body transform"));
+        }
+        let mirror = RigTForm::try_from(Matrix4::from_scale(Cvec3::new(1.0, 1.0, -1.0)));
+        assert_eq!(mirror.unwrap_err().deviation, f32::INFINITY);
+        // Within the tolerance: accepted, and the rotation made unit.
+        let nearly = Matrix4::from_scale(Cvec3::new(1.0, 1.0, 1.0 + 1e-5));
+        assert!(RigTForm::try_from(nearly).unwrap().r.is_normalized());
+    }
+}
