@@ -10,7 +10,16 @@
 //! the power operator `pow` (atan2 and conditional negation `cn`), `slerp`,
 //! [`RigTForm`] (translation plus rotation quaternion, with its product,
 //! inverse and interpolation) and the few [`Matrix4`]s a renderer still
-//! needs (projection, model-view, normal matrix).
+//! needs (projection, model-view, normal matrix), and the IMU attitude
+//! filter of [`attitude`].
+//!
+//! - Firmware authors (Cortex-M4F, Cortex-M0): f32 only, no allocation, a
+//!   documented result for every input bit pattern, `defmt` formatting;
+//!   `thumbv7em-none-eabihf` and `thumbv6m-none-eabi` build in CI.
+//! - Renderer authors: object and eye frames as [`RigTForm`]s, keyframe
+//!   interpolation that is left invariant and takes the short way, and
+//!   OpenGL matrices ([`Matrix4::to_cols_array`] goes straight to
+//!   `glUniformMatrix4fv`).
 //!
 //! # Conventions
 //!
@@ -147,10 +156,10 @@
 //! | (default) | f32 atan2, sine and cosine kernels, each within 1 to 1.6 ulp (no f64 arithmetic, so no soft-float code on a Cortex-M4F); on x86-64 and AArch64 only, where f64 costs what f32 does, slerp's angle and sines in f64 (one polynomial each, below a tenth of an f32 ulp but the angle's square root); the processor's square root instruction on Arm hard-float targets, x86-64 and AArch64; libm for the rest |
 //! | `fast-math` | `micromath`'s atan2, sine, cosine and tangent where they hold (the default sine and cosine kernel beyond 2^9 rad): far less accurate (see [`accuracy`]). On the Cortex-M4F a few percent faster where atan2 or the sines dominate (slerp 354 instructions instead of 357, `Smoother::update` 327 instead of 375), but not smaller: a firmware with the filter, slerp and `RigTForm` takes 12,828 bytes of flash instead of 12,700, and on the Cortex-M0 14,588 instead of 13,672 |
 //! | `defmt` | `defmt::Format` for every public type, for logging on target |
-//! | `mint` | `From` conversions to and from `mint` types (interop with glam, nalgebra, cgmath), and `mint::IntoMint` |
-//! | `serde` | `Serialize` and `Deserialize` for every public type, the attitude filter's state included |
-//! | `bytemuck` | `Pod` and `Zeroable` for the vectors, `Quat`, `RigTForm`, `Matrix4`, `Smoother`, `FilterParams`, `InertialCalibration` and `MagneticCalibration` (GPU uploads, wire formats) |
-//! | `approx` | `AbsDiffEq`, `RelativeEq` and `UlpsEq`, component by component (compare rotations with [`Quat::angle_to`]) |
+//! | `mint` | `From` conversions to and from `mint` types (interop with glam, nalgebra, cgmath through `mint`), and `mint::IntoMint` for generic code |
+//! | `serde` | `Serialize` and `Deserialize` for every public type, as structs with the Rust field names (a `Quat` is `{x, y, z, w}`); the attitude filter with its whole state, so that a learned gyro bias can be saved and restored |
+//! | `bytemuck` | `Pod` and `Zeroable` for the vectors, `Quat`, `RigTForm`, `Matrix4`, `Smoother`, `FilterParams`, `InertialCalibration` and `MagneticCalibration`: slices cast to bytes without a copy (GPU uploads, wire formats), each type its `f32`s in field order (`Quat` `x, y, z, w`; `Matrix4` column-major). bytemuck's derive writes the `unsafe impl`s after checking `repr(C)`, no padding and `Pod` fields |
+//! | `approx` | `AbsDiffEq`, `RelativeEq` and `UlpsEq` for the vectors, `Quat`, `RigTForm` and `Matrix4`, component by component with `f32`'s defaults, as glam does (`q` and `-q` are one rotation but never component-wise equal: compare rotations with [`Quat::angle_to`]) |
 //!
 //! What `fast-math` changes on the emulated Cortex-M4F (QEMU `mps2-an386`,
 //! opt-level "s"; instructions per call from `cargo xtask m4f --count-only
