@@ -138,6 +138,54 @@ impl Quat {
         self * other
     }
 
+    /// `1 / |self|`, glam's `length_recip`.
+    ///
+    /// ```
+    /// assert_eq!(rigtform::Quat::from_xyzw(0.0, 0.0, 0.0, 2.0).length_recip(), 0.5);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn length_recip(self) -> f32 {
+        1.0 / self.norm()
+    }
+
+    /// `true` if the rotation turns by less than 0.002 847 144 6 radians,
+    /// the threshold of glam's `is_near_identity` (either sign of the
+    /// quaternion; [`angle`](Self::angle) measures the turn). `false` for
+    /// NaN.
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// assert!(Quat::from_rotation_x(1e-3).is_near_identity());
+    /// assert!(!Quat::from_rotation_x(1e-2).is_near_identity());
+    /// assert!((-Quat::IDENTITY).is_near_identity());
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn is_near_identity(self) -> bool {
+        self.angle() < 0.002_847_144_6
+    }
+
+    /// The shortest rotation taking `from` to either `to` or `-to`,
+    /// whichever is nearer: glam's `from_rotation_arc_colinear`, for
+    /// directions whose sign does not matter (an axis, a line of sight).
+    /// Otherwise as [`from_rotation_arc`](Self::from_rotation_arc), with
+    /// its preconditions and accuracy; the turn is at most pi/2.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::from_rotation_arc_colinear(Cvec3::X, -Cvec3::X);
+    /// assert!(q.angle() < 1e-6); // -X is already on the line of X
+    /// ```
+    #[must_use]
+    pub fn from_rotation_arc_colinear(from: Cvec3, to: Cvec3) -> Self {
+        if from.dot(to) < 0.0 {
+            Self::from_rotation_arc(from, -to)
+        } else {
+            Self::from_rotation_arc(from, to)
+        }
+    }
+
     /// glam's and nalgebra's `inverse`: the notes call it `inv`.
     ///
     /// ```
@@ -339,5 +387,31 @@ mod tests {
             assert!(Quat::from_mat4(&m).angle_to(Quat::from_array(from_glam.to_array())) < 1e-5);
         }
         assert_eq!(Quat::identity().to_array(), glam::Quat::IDENTITY.to_array());
+        let mut rng = rand::rngs::StdRng::seed_from_u64(34);
+        for _ in 0..10_000 {
+            let mut v = || {
+                Cvec3::new(
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                    rng.random_range(-1.0..1.0),
+                )
+                .normalize()
+            };
+            let (from, to) = (v(), v());
+            let ours = Quat::from_rotation_arc_colinear(from, to);
+            let theirs = glam::Quat::from_rotation_arc_colinear(
+                glam::Vec3::from_array(from.to_array()),
+                glam::Vec3::from_array(to.to_array()),
+            );
+            assert!(ours.angle_to(Quat::from_array(theirs.to_array())) < 1e-4);
+            assert!(ours.angle() <= core::f32::consts::FRAC_PI_2 + 1e-6);
+            let angle = rng.random_range(0.0..0.01f32);
+            let q = Quat::from_axis_angle(from, angle);
+            let g = glam::Quat::from_array(q.to_array());
+            if (angle - 0.002_847_144_6).abs() > 1e-4 {
+                assert_eq!(q.is_near_identity(), g.is_near_identity(), "{angle}");
+            }
+            assert!((q.length_recip() - g.length_recip()).abs() < 1e-6);
+        }
     }
 }
