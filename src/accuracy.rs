@@ -16,43 +16,34 @@
 //! Angles are radians; "angle error" is the angle of the rotation between the
 //! computed and the exact result (compared up to sign, as rotations).
 //!
-//! With the `fast-math` feature, micromath's approximations of atan2, sin,
-//! cos and tan are far less accurate: the constants that depend on them then
-//! take the values measured for that backend, about 1e-3 to 2e-2 instead of
-//! 1e-7 (run `cargo test --features fast-math --tests -- --nocapture` to see
-//! them). Products, rotations, matrices and `normalize` use no
-//! transcendental function and keep their bounds.
-//!
-//! | bound | default | `fast-math` (micromath) |
-//! | --- | --- | --- |
-//! | [`MUL_MAX_ANGLE_ERROR`] | 3.8e-7 | 3.8e-7 |
-//! | [`ROTATE_MAX_REL_ERROR`] | 6.0e-7 | 6.0e-7 |
-//! | [`MATRIX_ENTRY_ERROR`] | 3.8e-7 | 3.8e-7 |
-//! | [`INVERSE_MAX_REL_ERROR`] | 5.5e-7 | 5.5e-7 |
-//! | [`NORMALIZE_MAX_NORM_ERROR`] | 2.2e-7 | 2.2e-7 |
-//! | [`UNIT_NORM_ERROR`] | 3.2e-7 | 1.25e-3 |
-//! | [`POW_MAX_ANGLE_ERROR`] | 3.4e-7 | 2.3e-2 |
-//! | [`SLERP_MAX_ANGLE_ERROR`] | 5.2e-7 | 1.6e-2 |
-//! | [`ATAN2_MAX_ABS_ERROR`] | 3.2e-7 | 3.5e-3 |
-//! | [`SIN_COS_MAX_ABS_ERROR`] | 6.4e-8 | 1.4e-3 |
-//! | [`TAN_MAX_REL_ERROR`] | 1.2e-7 | 1.6e-2 |
-//! | [`FROM_SCALED_AXIS_MAX_REL_ERROR`] | 3.0e-7 | 8.5e-3 |
-//! | [`TO_SCALED_AXIS_MAX_REL_ERROR`] | 3.2e-7 | 8.0e-2 |
-//! | [`EXP_LOG_POW_MAX_ANGLE_ERROR`] | 4.5e-7 | 2.7e-3 |
-//! | [`INTEGRATE_STEP_MAX_ANGLE_ERROR`] | 4.0e-7 | 2.8e-3 |
-//! | [`SMOOTHER_DECAY_MAX_ERROR`] | 1.0e-5 | 1.25e-2 |
-//! | [`RENORMALIZED_CHAIN_NORM_ERROR`] | 1.5e-7 | 1.5e-7 |
-//! | [`EULER_MAX_ANGLE_ERROR`] | 8.4e-7 | 7.9e-3 |
-//! | [`FROM_MATRIX_MAX_ANGLE_ERROR`] | 4.3e-7 | 4.3e-7 |
-//! | [`ROTATION_ARC_MAX_ERROR`] | 4.6e-7 | 4.6e-7 |
-//! | [`LOOK_AT_MAX_ANGLE_ERROR`] | 1.1e-6 | 1.1e-6 |
-//! | [`DETERMINANT_MAX_REL_ERROR`] | 5.3e-7 | 5.3e-7 |
-//! | [`CATMULL_ROM_MAX_ANGLE_ERROR`] | 4.8e-7 | 2.8e-2 |
+//! | bound | value |
+//! | --- | --- |
+//! | [`MUL_MAX_ANGLE_ERROR`] | 3.8e-7 |
+//! | [`ROTATE_MAX_REL_ERROR`] | 6.0e-7 |
+//! | [`MATRIX_ENTRY_ERROR`] | 3.8e-7 |
+//! | [`INVERSE_MAX_REL_ERROR`] | 5.5e-7 |
+//! | [`NORMALIZE_MAX_NORM_ERROR`] | 2.2e-7 |
+//! | [`UNIT_NORM_ERROR`] | 3.2e-7 |
+//! | [`POW_MAX_ANGLE_ERROR`] | 3.4e-7 |
+//! | [`SLERP_MAX_ANGLE_ERROR`] | 5.2e-7 |
+//! | [`ATAN2_MAX_ABS_ERROR`] | 3.2e-7 |
+//! | [`SIN_COS_MAX_ABS_ERROR`] | 6.4e-8 |
+//! | [`TAN_MAX_REL_ERROR`] | 1.2e-7 |
+//! | [`FROM_SCALED_AXIS_MAX_REL_ERROR`] | 3.0e-7 |
+//! | [`TO_SCALED_AXIS_MAX_REL_ERROR`] | 3.2e-7 |
+//! | [`EXP_LOG_POW_MAX_ANGLE_ERROR`] | 4.5e-7 |
+//! | [`INTEGRATE_STEP_MAX_ANGLE_ERROR`] | 4.0e-7 |
+//! | [`SMOOTHER_DECAY_MAX_ERROR`] | 1.0e-5 |
+//! | [`RENORMALIZED_CHAIN_NORM_ERROR`] | 1.5e-7 |
+//! | [`EULER_MAX_ANGLE_ERROR`] | 8.4e-7 |
+//! | [`FROM_MATRIX_MAX_ANGLE_ERROR`] | 4.3e-7 |
+//! | [`ROTATION_ARC_MAX_ERROR`] | 4.6e-7 |
+//! | [`LOOK_AT_MAX_ANGLE_ERROR`] | 1.1e-6 |
+//! | [`DETERMINANT_MAX_REL_ERROR`] | 5.3e-7 |
+//! | [`CATMULL_ROM_MAX_ANGLE_ERROR`] | 4.8e-7 |
 
-/// The bounds that depend on the float backend (here the default f32
-/// kernels of `src/float/`): measured maxima over 10^7 draws in the
-/// comments, rounded up by about 25 %.
-#[cfg(not(feature = "fast-math"))]
+/// The bounds that depend on the f32 kernels of `src/float/`: measured
+/// maxima over 10^7 draws in the comments, rounded up by about 25 %.
 mod backend {
     pub const ATAN2_MAX_ABS_ERROR: f32 = 3.2e-7; // 2.564e-7 (1.08 ulp of pi; the kernel is within 1.6 ulp)
     pub const SIN_COS_MAX_ABS_ERROR: f32 = 6.4e-8; // 5.126e-8
@@ -70,25 +61,6 @@ mod backend {
     pub const CATMULL_ROM_MAX_ANGLE_ERROR: f32 = 4.8e-7; // 3.849e-7 (5 keys, t over all of them)
 }
 
-/// micromath's kernels (`cargo test --features fast-math --tests -- --nocapture`).
-#[cfg(feature = "fast-math")]
-mod backend {
-    pub const ATAN2_MAX_ABS_ERROR: f32 = 3.5e-3; // 2.828e-3
-    pub const SIN_COS_MAX_ABS_ERROR: f32 = 1.4e-3; // 1.091e-3
-    pub const TAN_MAX_REL_ERROR: f32 = 1.6e-2; // 1.297e-2
-    pub const UNIT_NORM_ERROR: f32 = 1.25e-3; // 9.984e-4 (pow, slerp)
-    pub const POW_MAX_ANGLE_ERROR: f32 = 2.3e-2; // 1.867e-2 (pow), 5.656e-3 (to_axis_angle)
-    pub const SLERP_MAX_ANGLE_ERROR: f32 = 1.6e-2; // 1.344e-2 (random pairs)
-    pub const FROM_SCALED_AXIS_MAX_REL_ERROR: f32 = 8.5e-3; // 6.729e-3
-    pub const TO_SCALED_AXIS_MAX_REL_ERROR: f32 = 8.0e-2; // 6.345e-2 (micromath's atan2 near 0)
-    pub const EXP_LOG_POW_MAX_ANGLE_ERROR: f32 = 2.7e-3; // 2.128e-3
-    pub const INTEGRATE_STEP_MAX_ANGLE_ERROR: f32 = 2.8e-3; // 2.189e-3
-    pub const SMOOTHER_DECAY_MAX_ERROR: f32 = 1.25e-2; // 9.920e-3
-    pub const IS_NORMALIZED_TOLERANCE: f32 = 1.0e-2;
-    pub const EULER_MAX_ANGLE_ERROR: f32 = 7.9e-3; // 6.323e-3 (to_euler), 4.378e-3 (from_euler)
-    pub const CATMULL_ROM_MAX_ANGLE_ERROR: f32 = 2.8e-2; // 2.246e-2
-}
-
 /// Relative error of the square root kernel (`src/float/sqrt.rs`, `sweep_sqrt`).
 pub const SQRT_MAX_REL_ERROR: f32 = 6.0e-8; // 5.960e-8: libm sqrtf is correctly rounded
 
@@ -96,9 +68,7 @@ pub const SQRT_MAX_REL_ERROR: f32 = 6.0e-8; // 5.960e-8: libm sqrtf is correctly
 // result. Each bound is the largest error over every f32 of the kernel's
 // range (`cargo test --release --lib -- --ignored exhaustive_kernel_sweep`;
 // the maximum and where it occurs in the comment), rounded up; every test
-// run checks every 997th f32 against the same bound. With `fast-math`,
-// micromath answers inside its ranges, and these kernels take the rest
-// (zero, subnormal, huge and non-finite arguments).
+// run checks every 997th f32 against the same bound.
 
 /// The atan2 kernel, in ulps: `(t, 1)`, `(1, t)`, `(t, -1)`, `(1, -t)` and
 /// `(1 + t, 1)` for every f32 `t` in [0, 1], and random pairs at every
@@ -144,9 +114,7 @@ pub const RENORMALIZED_CHAIN_NORM_ERROR: f32 = 1.5e-7; // 1.192e-7 (plain produc
 /// [`Quat::is_normalized`](crate::Quat::is_normalized): the drift of about
 /// 300 chained products at [`UNIT_NORM_ERROR`] each (plain products without
 /// [`Quat::normalize`](crate::Quat::normalize)), and still small enough that
-/// rotating by such a quaternion scales vectors by less than 0.02 %. With
-/// `fast-math`, whose single results are off by up to 1.25e-3, it is 1e-2
-/// (8 such results). The check compares the squared norm with 1 within
+/// rotating by such a quaternion scales vectors by less than 0.02 %. The check compares the squared norm with 1 within
 /// twice this value.
 pub const IS_NORMALIZED_TOLERANCE: f32 = backend::IS_NORMALIZED_TOLERANCE;
 /// How far from rigid a matrix may be for
@@ -193,8 +161,7 @@ pub const POW_MAX_ANGLE_ERROR: f32 = backend::POW_MAX_ANGLE_ERROR;
 /// in [-pi, pi], and of the rotation (evaluated exactly) of the angles that
 /// [`Quat::to_euler`](crate::Quat::to_euler) returns for a unit quaternion,
 /// every order, gimbal lock included. `from_euler`'s result is also within
-/// this much of unit norm (2.029e-7 measured; 2.997e-3 with `fast-math`,
-/// whose three sines and cosines each add their error).
+/// this much of unit norm (2.029e-7 measured).
 pub const EULER_MAX_ANGLE_ERROR: f32 = backend::EULER_MAX_ANGLE_ERROR;
 /// Angle error of `Quat::from_scaled_axis(v)`, relative to the angle `|v|`:
 /// at most `FROM_SCALED_AXIS_MAX_REL_ERROR * |v|` radians, for angles from
@@ -219,10 +186,10 @@ pub const SMOOTHER_DECAY_MAX_ERROR: f32 = backend::SMOOTHER_DECAY_MAX_ERROR;
 /// `attitude::OrientationFilter` with `FilterParams::DEFAULT` on BROAD trial
 /// 16 (fast translation), shipped in `testkit/data/` and run by
 /// `tests/broad.rs`: the measured RMSE rounded up.
-pub const FILTER_BROAD_16_INCLINATION_RMSE_DEG: f32 = 0.6; // 0.526 6D and 9D (fast-math: 0.527)
+pub const FILTER_BROAD_16_INCLINATION_RMSE_DEG: f32 = 0.6; // 0.526 6D and 9D
 /// Bound on the 9D total RMSE, in degrees, of the same run with the
 /// magnetometer.
-pub const FILTER_BROAD_16_TOTAL_RMSE_DEG: f32 = 0.7; // 0.687 (fast-math: 0.679)
+pub const FILTER_BROAD_16_TOTAL_RMSE_DEG: f32 = 0.7; // 0.687
 /// Angle error of `a.slerp(b, alpha)` for unit inputs, in the same form as
 /// [`POW_MAX_ANGLE_ERROR`]: at most `SLERP_MAX_ANGLE_ERROR * max(1, |alpha| theta)`
 /// with `theta = a.angle_to(b)` (at most pi). So for `alpha` in [0, 1] it is
@@ -254,11 +221,10 @@ pub const MATRIX_ENTRY_ERROR: f32 = 3.8e-7; // 3.000e-7
 #[cfg(test)]
 mod tests {
     /// The tables in the module docs and in the README quote every constant
-    /// (but the two filter RMSE bounds) for both backends; this keeps the column of the backend under test
-    /// equal to the code.
+    /// (but the two filter RMSE bounds); this keeps them equal to the code.
     #[test]
     fn docs_table_matches_the_constants() {
-        let column = if cfg!(feature = "fast-math") { 2 } else { 1 };
+        let column = 1;
         let constants = [
             ("MUL_MAX_ANGLE_ERROR", super::MUL_MAX_ANGLE_ERROR),
             ("ROTATE_MAX_REL_ERROR", super::ROTATE_MAX_REL_ERROR),

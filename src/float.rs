@@ -1,9 +1,8 @@
-//! The one door to the float backend.
+//! The one door to the float kernels.
 //!
 //! Every square root and transcendental function the crate evaluates goes
-//! through the functions of this file, so that a backend can be swapped
-//! (feature `fast-math`), stubbed by a proof harness, or replaced by a
-//! faster kernel in one place. Behind the door, one file per kernel family:
+//! through the functions of this file, so that a kernel can be stubbed by
+//! a proof harness or replaced by a faster one in one place. Behind the door, one file per kernel family:
 //!
 //! | file | what | error |
 //! | --- | --- | --- |
@@ -13,32 +12,20 @@
 //! | `float/sqrt.rs` | the processor's square root instruction (Arm hard-float `vsqrt.f32`, x86-64 `sqrtss`, AArch64 `fsqrt`, the last two in a form a loop can vectorize), libm's `sqrtf` elsewhere | 0.5 ulp |
 //! | `float/norm.rs` | the overflow- and underflow-free sum of squares behind every `norm` and `normalize` | 2 ulp |
 //! | `float/double.rs` | on x86-64 and AArch64 only: slerp's angle (`atan2` of a root, a degree-17 odd polynomial on [0, 1]) and sines (on [0, pi/2], degree 9) in f64 | [`ANGLE_F64_MAX_REL_ERROR`](crate::accuracy::ANGLE_F64_MAX_REL_ERROR), [`SIN_F64_MAX_REL_ERROR`](crate::accuracy::SIN_F64_MAX_REL_ERROR) |
-//! | `float/fast_math.rs` | `fast-math`: micromath's atan2, sin, cos and tan, guarded | [`accuracy`](crate::accuracy) |
 //!
 //! The default kernels evaluate nothing in f64 but on 64-bit desktop
 //! targets (`float/double.rs`), so on a Cortex-M4F (single-precision FPU)
 //! no soft-float helper is linked. Their
 //! coefficients come from `tools/minimax.py` (Remez exchange in multiple
 //! precision), and the tests of each file sweep every 997th f32 of its
-//! range against f64 (every f32, with `exhaustive_kernel_sweep`). With
-//! `fast-math`, micromath answers where it is accurate enough, and the
-//! default kernels take zero, subnormal, huge and non-finite arguments,
-//! where micromath breaks down. The tangent, used only by
+//! range against f64 (every f32, with `exhaustive_kernel_sweep`). The tangent, used only by
 //! `Matrix4::perspective`, is libm's `tanf`; `exp_m1`, used by the
 //! smoothing factors, libm's `expm1f`.
 
-// With `fast-math`, micromath's atan2 and `fast_math::atan2_limits` take
-// this kernel's place in the build; only the tests still call it.
-#[cfg_attr(feature = "fast-math", allow(dead_code))]
 mod atan2;
 mod bits;
-#[cfg(all(
-    any(target_arch = "x86_64", target_arch = "aarch64"),
-    not(feature = "fast-math")
-))]
+#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 mod double;
-#[cfg(feature = "fast-math")]
-mod fast_math;
 mod head_tail;
 mod norm;
 mod reduce;
@@ -53,30 +40,18 @@ mod sweep;
     any(
         test,
         not(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))
-    ),
-    not(feature = "fast-math")
+    )
 ))]
 pub(crate) use bits::select;
 pub(crate) use bits::SIGN;
 /// What the vectorizable lanes of `Quat::slerp_slice` share with the single
 /// call.
-#[cfg(all(
-    any(target_arch = "x86_64", target_arch = "aarch64"),
-    not(feature = "fast-math")
-))]
+#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 pub(crate) use double::{atan2_of_root, sin_to_quarter_turn};
 /// The coefficients the x86-64 lanes of `Quat::slerp_slice` evaluate.
-#[cfg(all(
-    target_arch = "x86_64",
-    target_feature = "sse2",
-    not(kani),
-    not(feature = "fast-math")
-))]
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
 pub(crate) use double::{ATAN as ATAN_F64, SIN as SIN_F64};
-#[cfg(all(
-    any(target_arch = "x86_64", target_arch = "aarch64"),
-    not(feature = "fast-math")
-))]
+#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 pub(crate) use norm::SQUARES_UNDERFLOW;
 pub(crate) use norm::{needs_no_rescaling, scale_for_squares, ScaledSquares};
 pub(crate) use sin_cos::sin3;
@@ -86,69 +61,39 @@ pub use sqrt::sqrt;
 /// results for zeros and infinities (`atan2(+-0, -0) = +-pi`,
 /// `atan2(inf, inf) = pi/4`, ...) and NaN for NaN.
 ///
-/// Default backend: [`atan2_kernel`](atan2::atan2_kernel), within
+/// [`atan2_kernel`](atan2::atan2_kernel), within
 /// [`accuracy::ATAN2_MAX_ULP`](crate::accuracy::ATAN2_MAX_ULP) of the
 /// result.
-///
-/// fast-math: micromath's rational approximation, absolute error about
-/// 3e-3 rad (measured by `sweep_atan2` below), on arguments with magnitudes
-/// within [2^-20, 2^20] (others are first divided by the larger magnitude),
-/// where its squares cannot overflow or underflow (micromath's
-/// `atan2(1e-30, 1e-30)` is NaN); the default kernel where either argument
-/// is zero or not finite. The result gets the sign of `y`, as atan2's always
-/// has: micromath returns +pi instead of -pi for a tiny negative `y` against
-/// a negative `x`.
 #[inline]
 #[must_use]
 pub fn atan2(y: f32, x: f32) -> f32 {
-    #[cfg(feature = "fast-math")]
-    return fast_math::atan2(y, x);
-    #[cfg(not(feature = "fast-math"))]
-    return atan2::atan2_kernel(y, x);
+    atan2::atan2_kernel(y, x)
 }
 
 /// Sine and cosine of `x` (radians), as `(sin, cos)`.
 ///
-/// Default backend: [`sin_cos_kernel`](sin_cos::sin_cos_kernel), within
+/// [`sin_cos_kernel`](sin_cos::sin_cos_kernel), within
 /// [`accuracy::SIN_COS_NARROW_MAX_ULP`](crate::accuracy::SIN_COS_NARROW_MAX_ULP)
 /// for `|x| <= 3 pi/4` and within
 /// [`accuracy::SIN_COS_MAX_ULP`](crate::accuracy::SIN_COS_MAX_ULP) for
 /// every other finite `x` (exact argument reduction for any size).
-///
-/// fast-math: micromath's parabola approximations, absolute error
-/// about 1e-3 (measured by `sweep_sin_cos` below), for
-/// `2^-6 <= |x| <= 2^9`; the default kernel beyond, where micromath's own
-/// reduction loses accuracy (and returns infinities past 2^16). Below
-/// 2^-6, where micromath's absolute error would swamp small rotations (its
-/// `sin(1e-5)` is 0), Taylor polynomials of degree 3 and 2 instead: error
-/// below `x^5 / 120` (8e-12) and `x^4 / 24` (2.5e-9, under half an ulp of
-/// 1).
 #[inline]
 #[must_use]
 pub fn sin_cos(x: f32) -> (f32, f32) {
-    #[cfg(feature = "fast-math")]
-    return fast_math::sin_cos(x);
-    #[cfg(not(feature = "fast-math"))]
-    return sin_cos::sin_cos_kernel(x);
+    sin_cos::sin_cos_kernel(x)
 }
 
-/// Tangent of `x` (radians), for `Matrix4::perspective` only. libm: within
-/// 1 ulp. fast-math: micromath's tangent (about 1 % relative error over
-/// half fields of view, measured by `sweep_tan` below) for `|x| <= 2^9`,
-/// libm beyond.
+/// Tangent of `x` (radians), for `Matrix4::perspective` only: libm's
+/// `tanf`, within 1 ulp.
 #[inline]
 #[must_use]
 pub(crate) fn tan(x: f32) -> f32 {
-    #[cfg(feature = "fast-math")]
-    return fast_math::tan(x);
-    #[cfg(not(feature = "fast-math"))]
-    return libm::tanf(x);
+    libm::tanf(x)
 }
 
 /// `e^x - 1`, accurate also where `e^x` is close to 1: libm's `expm1f`
-/// (within 1 ulp), with both backends (micromath has no `exp_m1`, and the
-/// smoothing factors `1 - e^(-dt/tau)` built on it need relative accuracy
-/// for `dt` far below `tau`).
+/// (within 1 ulp): the smoothing factors `1 - e^(-dt/tau)` built on it
+/// need relative accuracy for `dt` far below `tau`.
 #[inline]
 #[must_use]
 pub(crate) fn exp_m1(x: f32) -> f32 {
@@ -157,7 +102,7 @@ pub(crate) fn exp_m1(x: f32) -> f32 {
 
 #[cfg(test)]
 mod tests {
-    //! The door's functions with the backend under test, against `std`'s
+    //! The door's functions against `std`'s
     //! f64 functions over the ranges `pow`, `slerp` and `perspective` use.
     use super::*;
     use crate::accuracy;

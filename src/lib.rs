@@ -154,37 +154,26 @@
 //! | feature | what it adds |
 //! | --- | --- |
 //! | (default) | f32 atan2, sine and cosine kernels, each within 1 to 1.6 ulp (no f64 arithmetic, so no soft-float code on a Cortex-M4F); on x86-64 and AArch64 only, where f64 costs what f32 does, slerp's angle and sines in f64 (one polynomial each, below a tenth of an f32 ulp but the angle's square root); the processor's square root instruction on Arm hard-float targets, x86-64 and AArch64; libm for the rest |
-//! | `fast-math` | `micromath`'s atan2, sine, cosine and tangent where they hold (the default sine and cosine kernel beyond 2^9 rad): far less accurate (see [`accuracy`]). On the Cortex-M4F a few percent faster where atan2 or the sines dominate (slerp 354 instructions instead of 357, `Smoother::update` 327 instead of 375), but not smaller: a firmware with the filter, slerp and `RigTForm` takes 12,828 bytes of flash instead of 12,700, and on the Cortex-M0 14,588 instead of 13,672 |
 //! | `defmt` | `defmt::Format` for every public type, for logging on target |
 //! | `mint` | `From` conversions to and from `mint` types (interop with glam, nalgebra, cgmath through `mint`), and `mint::IntoMint` for generic code |
 //! | `serde` | `Serialize` and `Deserialize` for every public type, as structs with the Rust field names (a `Quat` is `{x, y, z, w}`); the attitude filter with its whole state, so that a learned gyro bias can be saved and restored |
 //! | `bytemuck` | `Pod` and `Zeroable` for the vectors, `Quat`, `RigTForm`, `Matrix4`, `Smoother`, `FilterParams`, `InertialCalibration` and `MagneticCalibration`: slices cast to bytes without a copy (GPU uploads, wire formats), each type its `f32`s in field order (`Quat` `x, y, z, w`; `Matrix4` column-major). bytemuck's derive writes the `unsafe impl`s after checking `repr(C)`, no padding and `Pod` fields |
 //! | `approx` | `AbsDiffEq`, `RelativeEq` and `UlpsEq` for the vectors, `Quat`, `RigTForm` and `Matrix4`, component by component with `f32`'s defaults, as glam does (`q` and `-q` are one rotation but never component-wise equal: compare rotations with [`Quat::angle_to`]) |
 //!
-//! What `fast-math` changes on the emulated Cortex-M4F (QEMU `mps2-an386`,
-//! opt-level "s"; instructions per call from `cargo xtask m4f --count-only
-//! [--features fast-math]` and `cargo xtask filter-cost [--features
-//! fast-math]`, one run each):
-//!
-//! | operation | default | `fast-math` |
-//! | --- | --- | --- |
-//! | `slerp` | 357 | 354 |
-//! | `pow` | 243 | 247 |
-//! | `RigTForm::interpolate` | 388 | 385 |
-//! | `OrientationFilter::update` (6D) | 1412 | 1423 |
-//! | `OrientationFilter::update_with_mag` (9D) | 1890 | 1852 |
-//! | `Smoother::update` | 375 | 327 |
-//! | `Quat::integrate` | 147 | 147 |
-//!
-//! In `examples/firmware` (the filter, slerp and `RigTForm` in a
-//! `cortex-m-rt` main loop) `fast-math` adds micromath's atan2 (440 bytes)
-//! and sines beside the default kernels that slerp and the edge cases keep:
-//! 128 bytes more flash on the Cortex-M4F, 916 on the Cortex-M0. On the
-//! host it is not reliably faster (`docs/performance.md` in the
-//! repository).
+//! There is no fast-math backend. micromath's approximations of atan2,
+//! sine, cosine and tangent, measured in their place on the emulated
+//! Cortex-M4F (`cargo xtask m4f`), saved at most 1 % of the instructions of
+//! any operation but `Smoother::update` (327 against 375), cost more of
+//! some (`catmull_rom` 2,805 against 2,689) and added flash to every
+//! operation that used them (`pow` 2,224 bytes against 1,836); a firmware
+//! with the filter, slerp and `RigTForm` took 12,828 bytes against 12,656
+//! on the Cortex-M4F and 14,552 against 13,640 on the Cortex-M0, and the
+//! kernels were four orders of magnitude less accurate. micromath stays a
+//! measured peer on the performance page.
 //!
 //! The library never needs `std`. It builds with Rust 1.84 or newer, with
-//! every feature (`rust-version`, checked in CI).
+//! every feature but `glam` (Rust 1.85, glam 0.34's) and `nalgebra` (Rust
+//! 1.89, nalgebra 0.35's) (`rust-version`, checked in CI).
 
 #![cfg_attr(not(test), no_std)]
 #![cfg_attr(docsrs, feature(doc_cfg))]

@@ -19,12 +19,7 @@ use core::ops::{Mul, MulAssign, Neg};
 
 use crate::vec::{Cvec3, Cvec4};
 
-#[cfg(all(
-    target_arch = "x86_64",
-    target_feature = "sse2",
-    not(kani),
-    not(feature = "fast-math")
-))]
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
 pub(crate) use slerp_slice::lerp_rig_tforms;
 pub(crate) use slerp_slice::{slerp_slice_by, Slerped};
 
@@ -247,10 +242,7 @@ mod towards;
 
 mod slerp_slice;
 
-#[cfg(all(
-    any(target_arch = "x86_64", target_arch = "aarch64"),
-    not(feature = "fast-math")
-))]
+#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 mod slerp_f64;
 
 mod euler;

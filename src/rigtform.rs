@@ -294,12 +294,7 @@ impl crate::quat::Slerped for RigTForm {
     fn lerp_rest(start: &Self, end: &Self, alpha: f32, out: &mut Self) {
         out.t = start.t.lerp(end.t, alpha);
     }
-    #[cfg(all(
-        target_arch = "x86_64",
-        target_feature = "sse2",
-        not(kani),
-        not(feature = "fast-math")
-    ))]
+    #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
     #[inline(always)]
     fn lerp_rest_of(starts: &[Self], ends: &[Self], alpha: f32, out: &mut [Self]) {
         crate::quat::lerp_rig_tforms(starts, ends, alpha, out);

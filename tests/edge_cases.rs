@@ -403,11 +403,8 @@ fn slerp_of_inputs_closer_than_f32_squares_can_tell_is_the_tiny_turn() {
         let s = a.slerp(b, alpha);
         assert!(is_unit(s, UNIT_NORM_ERROR), "{alpha}: {s:?}");
         assert!(s.angle_to(a) <= SLERP_MAX_ANGLE_ERROR, "{alpha}: {s:?}");
-        // The turn itself, to a few ulps, with the default kernels (fast-math's
-        // atan2 is only accurate to about 3e-3 rad absolute: 6 % here).
-        if !cfg!(feature = "fast-math") {
-            assert!((s.x - alpha * 1e-20).abs() <= 1e-26, "{alpha}: {s:?}");
-        }
+        // The turn itself, to a few ulps.
+        assert!((s.x - alpha * 1e-20).abs() <= 1e-26, "{alpha}: {s:?}");
     }
 }
 
@@ -495,8 +492,7 @@ fn renormalized_product_chain_stays_unit() {
         .map(|_| {
             let axis = draws.unit_vec64();
             let axis = Cvec3::new(axis.x as f32, axis.y as f32, axis.z as f32);
-            // Normalized: unit to an ulp with either backend (fast-math's
-            // sines leave from_axis_angle 1e-3 off unit).
+            // Normalized: unit to an ulp.
             Quat::from_axis_angle(axis, draws.uniform(0.0, 0.1) as f32).normalize()
         })
         .collect();
@@ -585,9 +581,6 @@ fn slerp_extrapolated_far_from_nearly_antipodal_inputs_of_any_scale_is_unit() {
     assert!(s.angle_to(a) < 1e-14, "{s:?}");
 }
 
-// With the default kernels: fast-math's atan2 is off by about 6 % of such
-// tiny angles (within its absolute bound), which alpha multiplies too.
-#[cfg(not(feature = "fast-math"))]
 #[test]
 fn slerp_extrapolated_from_inputs_ulps_apart_turns_by_no_more_than_their_resolution() {
     // Inputs 3e-8 to 1e-5 rad apart differ by a few ulps to a few hundred:

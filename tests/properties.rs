@@ -532,11 +532,6 @@ proptest! {
     }
 }
 
-// With `fast-math`, micromath's kernels are off by up to 2.8e-2 rad
-// (`CATMULL_ROM_MAX_ANGLE_ERROR`): far more than a difference over 1/256 of
-// a key can tell from a turn, so the velocity checks run on the default
-// backend only.
-#[cfg(not(feature = "fast-math"))]
 /// The angular velocity jump, in rad per unit of `t`, of `path` at `s`:
 /// the two one-sided velocities apart.
 fn velocity_jump(path: impl Fn(f32) -> Quat + Copy, s: f32) -> f64 {
@@ -546,7 +541,6 @@ fn velocity_jump(path: impl Fn(f32) -> Quat + Copy, s: f32) -> f64 {
 }
 
 /// Piecewise slerp through `keys`, key `i` at `t = i`.
-#[cfg(not(feature = "fast-math"))]
 fn piecewise_slerp(keys: &[Quat], t: f32) -> Quat {
     let i = (t.max(0.0) as usize).min(keys.len() - 2);
     keys[i].slerp(keys[i + 1], t - i as f32)
@@ -582,8 +576,7 @@ proptest! {
         assert_holds(laws::catmull_rom_translation_is_the_cubic(&walk, t));
     }
 
-    #[cfg(not(feature = "fast-math"))]
-    #[test]
+        #[test]
     fn catmull_rom_angular_velocity_is_continuous_at_every_key(walk in key_walk(5)) {
         let keys: Vec<Quat> = walk.iter().map(|k| k.r).collect();
         let spline = |t: f32| Quat::catmull_rom(&keys, t);
@@ -611,7 +604,6 @@ proptest! {
     }
 }
 
-#[cfg(not(feature = "fast-math"))]
 #[test]
 fn piecewise_slerp_jumps_at_the_keys_where_catmull_rom_does_not() {
     // A quarter turn about z, then one about x: slerp key to key changes

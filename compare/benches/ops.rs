@@ -273,11 +273,7 @@ fn quat_ops(c: &mut Criterion) {
                 .collect(),
         );
         let mats: &'static [_] = keep::<Vec<_>>(p.tf.iter().map(|&a| Matrix4::from(a)).collect());
-        let name = if cfg!(feature = "fast-math") {
-            "rigtform (fast-math)"
-        } else {
-            "rigtform"
-        };
+        let name = "rigtform";
 
         run(jobs, "q*q", name, &p.qq, |(a, b)| a * b);
         run(jobs, "q*q renormalized", name, &p.qq, |(a, b)| {
@@ -320,10 +316,7 @@ fn quat_ops(c: &mut Criterion) {
         run(jobs, "Matrix4 from RigTForm", name, &p.tf, Matrix4::from);
         run(jobs, "normal_matrix", name, mats, Matrix4::normal_matrix);
     }
-    // With fast-math only rigtform is measured again (the peers do not change).
-    if !cfg!(feature = "fast-math") {
-        peers(jobs, &inp);
-    }
+    peers(jobs, &inp);
     // Operation by operation, in the order of the performance page's table (a stable
     // sort keeps rigtform first within each).
     jobs.sort_by_key(|&(op, _)| OPS.iter().position(|&o| o == op));

@@ -184,7 +184,7 @@ pub fn check_all(t: &mut Tally, draws: u32) {
             let flags_ok = d.mag_ignored && d.resting && !d.acc_ignored && !d.initialising;
             let error = if flags_ok { worst } else { 1.0 };
             // The heading is an atan2 and the Euler angles go through atan2s:
-            // their bounds (wide with fast-math), or 1e-3 of the filter's own.
+            // their bounds, or 1e-3 of the filter's own.
             let bound = ATAN2_MAX_ABS_ERROR.max(EULER_MAX_ANGLE_ERROR).max(1e-3);
             within("outputs and magnet", error.into(), bound.into(), 6)
         },

@@ -16,15 +16,11 @@
 //! rounding, the sine and cosine's from the kernel's ulp bounds
 //! ([`accuracy::SIN_COS_NARROW_MAX_ULP`](rigtform::accuracy::SIN_COS_NARROW_MAX_ULP),
 //! [`accuracy::SIN_COS_MAX_ULP`](rigtform::accuracy::SIN_COS_MAX_ULP)), which the
-//! exhaustive kernel sweep establishes over every f32. With `fast-math`,
-//! micromath's kernels have no such bound, and the tolerance rests on their
-//! measured maximum error instead.
+//! exhaustive kernel sweep establishes over every f32.
 
-#[cfg(not(feature = "fast-math"))]
 use rigtform::accuracy::{SIN_COS_MAX_ULP, SIN_COS_NARROW_MAX_ULP};
 
 /// The larger of two bounds, in a constant.
-#[cfg(not(feature = "fast-math"))]
 const fn max(a: f32, b: f32) -> f32 {
     if a > b {
         a
@@ -38,15 +34,8 @@ const fn max(a: f32, b: f32) -> f32 {
 /// ranges') times the largest ulp of a value in `[-1, 1]`, 2^-23 (the
 /// spacing above 1, which the sweeps' ulp of a true value just below 1
 /// rounds to).
-#[cfg(not(feature = "fast-math"))]
 pub const SIN_COS_ABS_BOUND: f64 =
     max(SIN_COS_NARROW_MAX_ULP, SIN_COS_MAX_ULP) as f64 / 8_388_608.0;
-
-/// How far micromath's sine or cosine may be from the truth: the measured
-/// maximum ([`SIN_COS_MAX_ABS_ERROR`](rigtform::accuracy::SIN_COS_MAX_ABS_ERROR),
-/// rounded up by a quarter); micromath has no proven bound.
-#[cfg(feature = "fast-math")]
-pub const SIN_COS_ABS_BOUND: f64 = rigtform::accuracy::SIN_COS_MAX_ABS_ERROR as f64;
 
 /// `sin^2 + cos^2` is within this of 1. With `s = sin x + e` and
 /// `c = cos x + f`, `|e|, |f| <= d` ([`SIN_COS_ABS_BOUND`]):

@@ -24,9 +24,7 @@
 //! angles, so its harnesses keep the real kernels: polynomials (on
 //! x86-64, where Kani runs, the f64 angle and sines of `float/double.rs`
 //! for `alpha` in (0, 1]), and for extrapolation beyond 3 pi/4 an argument
-//! reduction in integers that branches. They check the default backend; `fast-math`'s micromath
-//! kernels are not model-checked (the stand-in runs the bodies with both
-//! backends).
+//! reduction in integers that branches.
 //!
 //! Tractability: the harnesses of exact, bit-level laws (`inv`, `cn`, NaN
 //! out for NaN in, exactness at `alpha = 0`, `None` or finite for the

@@ -71,8 +71,7 @@ pub fn assert_holds(verdict: Verdict) {
 /// 6.6e-7. Both are below 4 x 3.2e-7 = 1.28e-6, and so is `pow` under the
 /// Kani stubs, whose sines may be off the unit circle by the whole
 /// [`PYTHAGORAS_TOL`](crate::contracts::PYTHAGORAS_TOL) (4.5e-7, from the
-/// kernel's ulp bound): 9.3e-7. With `fast-math` the bound
-/// follows its `UNIT_NORM_ERROR` (5e-3).
+/// kernel's ulp bound): 9.3e-7.
 pub const ONE_STEP_NORM_TOL: f64 = 4.0 * UNIT_NORM_ERROR as f64;
 
 /// `|norm^2 - 1|` allowed after two rounded operations (`slerp` is a `pow`
@@ -83,8 +82,7 @@ pub const TWO_STEP_NORM_TOL: f64 = 2.0 * ONE_STEP_NORM_TOL;
 /// and back (`a * a.inv()`, `a.inv().inv()`): two rotations, each within
 /// [`ROTATE_MAX_REL_ERROR`] (measured), times four for the worst case, plus
 /// what a rotation quaternion off unit by [`ONE_STEP_NORM_TOL`] does to
-/// lengths (`2 |norm^2 - 1|` per rotation; with `fast-math`, whose
-/// rotations are unit only to about 1e-3, this term dominates).
+/// lengths (`2 |norm^2 - 1|` per rotation).
 pub const TRANSLATION_REL_TOL: f64 = 4.0 * ONE_STEP_NORM_TOL + 8.0 * ROTATE_MAX_REL_ERROR as f64;
 
 /// Absolute slack for results that should be zero or equal, in units of the
@@ -832,7 +830,6 @@ mod tests {
         assert!(err.measured.is_nan());
     }
 
-    #[cfg(not(feature = "fast-math"))]
     #[test]
     fn tolerances_follow_their_derivation() {
         let u = 1.0 / 16_777_216.0; // 2^-24

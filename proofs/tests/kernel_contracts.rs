@@ -1,8 +1,6 @@
 //! The Kani harnesses of this crate replace the library's three float
 //! kernels by their contracts (`src/contracts.rs`, `src/stubs.rs`); that is
-//! sound only if the kernels meet them. This checks it, with the backend
-//! the library is built with (`--features fast-math` for the other), on
-//! every edge value and on a sweep of every binade (every 4096th bit
+//! sound only if the kernels meet them. This checks it on every edge value and on a sweep of every binade (every 4096th bit
 //! pattern, NaNs included). The sine and cosine contract's tolerance comes
 //! from the kernel's ulp bounds (`contracts::SIN_COS_ABS_BOUND`), which the
 //! library's exhaustive kernel sweep establishes; the ignored test below

@@ -107,8 +107,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
 /// LTO), counted by `cargo xtask filter-cost`, which fails above the
 /// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
-/// state: 1,412 (6D) and 1,890 (9D) with the default kernels, 1,423 and
-/// 1,852 with `fast-math`.
+/// state: 1,412 (6D) and 1,890 (9D).
 ///
 /// # Bad input
 ///

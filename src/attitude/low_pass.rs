@@ -159,8 +159,7 @@ mod tests {
             let (want_c, want_s) = (decay * (x as f64).cos(), decay * (x as f64).sin());
             // Relative to the decay, and beyond that the 6e-8 to which
             // 1 + exp_m1(-x) rounds in f32; above the series' limit, the
-            // sine and cosine kernel's error too (the fast-math backend's
-            // is larger).
+            // sine and cosine kernel's error too.
             let kernel = if x > SERIES_LIMIT {
                 decay * crate::accuracy::SIN_COS_MAX_ABS_ERROR as f64
             } else {

@@ -79,7 +79,7 @@ pub(crate) fn atan2_kernel(y: f32, x: f32) -> f32 {
     f32::from_bits(phi.to_bits() | (y.to_bits() & SIGN))
 }
 
-#[cfg(all(test, not(feature = "fast-math")))]
+#[cfg(test)]
 mod tests {
     use super::*;
     use crate::accuracy::{ATAN2_MAX_ULP, ATAN_POLY_MAX_ULP};

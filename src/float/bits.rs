@@ -6,7 +6,6 @@ pub(crate) const SIGN: u32 = 0x8000_0000;
 /// `if c { a } else { b }`, by bit masks: no branch for the data to
 /// mispredict (both values are computed anyway).
 #[inline]
-#[cfg_attr(feature = "fast-math", allow(dead_code))] // the atan2 kernel's and the slice lanes'
 pub(crate) fn select(c: bool, a: f32, b: f32) -> f32 {
     let mask = u32::from(c).wrapping_neg();
     f32::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))

@@ -9,10 +9,8 @@ pub(super) const PIO2_HI: f32 = core::f32::consts::FRAC_PI_2;
 /// pi/2 - [`PIO2_HI`] rounded to f32 (0xb33bbd2e).
 pub(super) const PIO2_LO: f32 = -4.371_139e-8;
 /// pi/4 rounded to f32 (0x3f490fdb).
-#[cfg_attr(feature = "fast-math", allow(dead_code))] // the atan2 kernel's
 pub(super) const PIO4_HI: f32 = core::f32::consts::FRAC_PI_4;
 /// pi/4 - [`PIO4_HI`] rounded to f32 (0xb2bbbd2e).
-#[cfg_attr(feature = "fast-math", allow(dead_code))] // the atan2 kernel's
 pub(super) const PIO4_LO: f32 = -2.185_569_4e-8;
 /// pi rounded to f32 (0x40490fdb).
 pub(super) const PI_HI: f32 = core::f32::consts::PI;

@@ -84,7 +84,7 @@ pub(super) fn reduce_by_quarter_turns(a: f32) -> (u32, f32, f32) {
     (quadrant as u32, r, t)
 }
 
-#[cfg(all(test, not(feature = "fast-math")))]
+#[cfg(test)]
 mod tests {
     use super::*;
 

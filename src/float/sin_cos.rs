@@ -145,7 +145,7 @@ fn sin_cos_reduced(x: f32) -> (f32, f32) {
     )
 }
 
-#[cfg(all(test, not(feature = "fast-math")))]
+#[cfg(test)]
 mod tests {
     use super::*;
     use crate::accuracy::{SIN_COS_MAX_ULP, SIN_COS_NARROW_MAX_ULP, SIN_COS_POLY_MAX_ULP};

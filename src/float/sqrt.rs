@@ -17,11 +17,6 @@
 ///   libm's `sqrtf` is the same instruction there, but in inline assembly,
 ///   which a loop vectorizer cannot look into.
 /// - Elsewhere it is libm's `sqrtf`.
-///
-/// `fast-math` keeps it on purpose: micromath's `sqrt` is a single
-/// bit-level estimate with a relative error of up to 6.1 % (6.066e-2 over
-/// [1e-3, 4], `micromaths_sqrt_is_too_coarse_for_normalize`; and its
-/// `sqrt(0)` is 8e-20), which would leave `normalize` nearly useless.
 #[inline]
 #[must_use]
 pub fn sqrt(x: f32) -> f32 {

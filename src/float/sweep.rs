@@ -17,11 +17,9 @@ pub(super) fn spread(lo: f64, hi: f64, n: usize) -> impl Iterator<Item = f32> {
 /// The step of the kernel sweeps every test run does: every 997th f32 of
 /// a range (about a million arguments per range). The exhaustive sweeps,
 /// run by hand, take every f32 (step 1).
-#[cfg(not(feature = "fast-math"))]
 pub(super) const SAMPLE_STEP: usize = 997;
 
 /// Every `step`-th f32 from `lo` to `hi` (both included, both >= 0).
-#[cfg(not(feature = "fast-math"))]
 pub(super) fn floats(lo: f32, hi: f32, step: usize) -> impl Iterator<Item = f32> {
     (lo.to_bits()..=hi.to_bits())
         .step_by(step)
@@ -31,7 +29,6 @@ pub(super) fn floats(lo: f32, hi: f32, step: usize) -> impl Iterator<Item = f32>
 
 /// The largest ulp error of one kernel over a sweep, with the argument that
 /// reached it, and the bound it must stay within.
-#[cfg(not(feature = "fast-math"))]
 pub(super) struct Worst {
     what: &'static str,
     ulps: f64,
@@ -39,7 +36,6 @@ pub(super) struct Worst {
     bound: f32,
 }
 
-#[cfg(not(feature = "fast-math"))]
 impl Worst {
     /// No error seen yet for the sweep `what`, bounded by `bound` ulps.
     pub(super) fn new(what: &'static str, bound: f32) -> Self {

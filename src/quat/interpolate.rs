@@ -68,9 +68,7 @@ impl Quat {
     /// does not take (norms more than 1e-6 apart, components beyond 2^16,
     /// angles of 2^-12 rad or less) go the way described here. For
     /// extrapolation (where the two coefficients
-    /// grow and their rounding would show in the norm), and with the
-    /// `fast-math` feature (whose sines have absolute, not relative,
-    /// errors), the notes' formula itself is evaluated as a turn by
+    /// grow and their rounding would show in the norm) the notes' formula itself is evaluated as a turn by
     /// `alpha phi` from `self` (`slerp_extrapolated`; it rounds `alpha phi`,
     /// so its error grows with the turn).
     ///
@@ -113,20 +111,14 @@ impl Quat {
     #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
     #[must_use]
     pub fn slerp(self, other: Self, alpha: f32) -> Self {
-        #[cfg(all(
-            any(target_arch = "x86_64", target_arch = "aarch64"),
-            not(feature = "fast-math")
-        ))]
+        #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
         {
             if let Some(q) = self.slerp_f64(other, alpha) {
                 return q;
             }
             slerp_f32_in_registers(self, other, alpha)
         }
-        #[cfg(not(all(
-            any(target_arch = "x86_64", target_arch = "aarch64"),
-            not(feature = "fast-math")
-        )))]
+        #[cfg(not(any(target_arch = "x86_64", target_arch = "aarch64")))]
         self.slerp_f32(other, alpha)
     }
 
@@ -134,10 +126,7 @@ impl Quat {
     /// x86-64 and AArch64, where it takes what the f64 evaluation does not,
     /// out of line, through [`slerp_f32_in_registers`].
     #[cfg_attr(
-        not(all(
-            any(target_arch = "x86_64", target_arch = "aarch64"),
-            not(feature = "fast-math")
-        )),
+        not(any(target_arch = "x86_64", target_arch = "aarch64")),
         inline(always)
     )]
     fn slerp_f32(self, other: Self, alpha: f32) -> Self {
@@ -178,10 +167,7 @@ impl Quat {
         let n = float::sqrt(n2);
         let beta = float::sqrt(u.sum);
         let phi = float::atan2(beta, n * dot * u.scale);
-        // With fast-math, whose sines are off by about 1e-3 absolute, too
-        // much to divide by a small sin(phi), the extrapolating evaluation
-        // serves every alpha.
-        if cfg!(feature = "fast-math") || !(0.0..=1.0).contains(&alpha) {
+        if !(0.0..=1.0).contains(&alpha) {
             return self.slerp_extrapolated(u, n2, n, beta, phi, alpha);
         }
         self.slerp_in_plane(other, n2, on2, phi, alpha)
@@ -410,10 +396,7 @@ impl Quat {
 /// case this call comes (31.0 against 29.5 ns per call on x86-64). Chains
 /// of dependent slerps pay a little for the registers instead (about 5 %
 /// in `catmull_rom`).
-#[cfg(all(
-    any(target_arch = "x86_64", target_arch = "aarch64"),
-    not(feature = "fast-math")
-))]
+#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 #[inline(never)]
 extern "C" fn slerp_f32_in_registers(a: Quat, b: Quat, alpha: f32) -> Quat {
     a.slerp_f32(b, alpha)

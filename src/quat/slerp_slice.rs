@@ -17,7 +17,7 @@ impl Quat {
     ///
     /// # How it is evaluated
     ///
-    /// On x86-64 and AArch64 (without `fast-math`), for `alpha` in (0, 1],
+    /// On x86-64 and AArch64, for `alpha` in (0, 1],
     /// the pairs go through the evaluation `slerp` itself takes there (its
     /// angle and sines in f64), written without a branch, many pairs at a
     /// time in vector registers:
@@ -81,12 +81,7 @@ pub(crate) trait Slerped: Copy {
     /// first `min(starts.len(), ends.len(), out.len())`) at once, for the
     /// steps of the x86-64 lanes; it may write the rotations of `out` too
     /// (they are written again afterwards).
-    #[cfg(all(
-        target_arch = "x86_64",
-        target_feature = "sse2",
-        not(kani),
-        not(feature = "fast-math")
-    ))]
+    #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
     fn lerp_rest_of(starts: &[Self], ends: &[Self], alpha: f32, out: &mut [Self]);
 }
 
@@ -101,12 +96,7 @@ impl Slerped for Quat {
     }
     #[inline(always)]
     fn lerp_rest(_: &Self, _: &Self, _: f32, _: &mut Self) {}
-    #[cfg(all(
-        target_arch = "x86_64",
-        target_feature = "sse2",
-        not(kani),
-        not(feature = "fast-math")
-    ))]
+    #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
     #[inline(always)]
     fn lerp_rest_of(_: &[Self], _: &[Self], _: f32, _: &mut [Self]) {}
 }
@@ -118,12 +108,7 @@ impl Slerped for Quat {
 /// (`RigTForm`'s), read and written in place.
 #[inline(always)]
 pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, out: &mut [T]) {
-    #[cfg(all(
-        target_arch = "x86_64",
-        target_feature = "avx",
-        not(kani),
-        not(feature = "fast-math")
-    ))]
+    #[cfg(all(target_arch = "x86_64", target_feature = "avx", not(kani)))]
     if alpha > 0.0 && alpha <= 1.0 {
         return steps::slerp_in_steps::<avx::Avx, T, 2, 4, 16>(starts, ends, alpha, out);
     }
@@ -131,16 +116,14 @@ pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, o
         target_arch = "x86_64",
         target_feature = "sse2",
         not(target_feature = "avx"),
-        not(kani),
-        not(feature = "fast-math")
+        not(kani)
     ))]
     if alpha > 0.0 && alpha <= 1.0 {
         return steps::slerp_in_steps::<sse2::Sse2, T, 4, 8, 16>(starts, ends, alpha, out);
     }
     #[cfg(all(
         any(target_arch = "x86_64", target_arch = "aarch64"),
-        not(all(target_arch = "x86_64", target_feature = "sse2", not(kani))),
-        not(feature = "fast-math")
+        not(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))
     ))]
     if alpha > 0.0 && alpha <= 1.0 {
         return lanes::slerp_in_blocks(starts, ends, alpha, out);
@@ -153,28 +136,13 @@ pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, o
 
 /// Steps of pairs in the vector registers of x86-64, through the
 /// operations of an instruction set, written by hand.
-#[cfg(all(
-    target_arch = "x86_64",
-    target_feature = "sse2",
-    not(kani),
-    not(feature = "fast-math")
-))]
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
 mod steps;
-#[cfg(all(
-    target_arch = "x86_64",
-    target_feature = "sse2",
-    not(kani),
-    not(feature = "fast-math")
-))]
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
 pub(crate) use steps::lerp_rig_tforms;
 
 /// The operations of AVX: sixteen pairs a step.
-#[cfg(all(
-    target_arch = "x86_64",
-    target_feature = "avx",
-    not(kani),
-    not(feature = "fast-math")
-))]
+#[cfg(all(target_arch = "x86_64", target_feature = "avx", not(kani)))]
 mod avx;
 
 /// The operations of SSE2: sixteen pairs a step (also compiled for the
@@ -183,8 +151,7 @@ mod avx;
     target_arch = "x86_64",
     target_feature = "sse2",
     any(test, not(target_feature = "avx")),
-    not(kani),
-    not(feature = "fast-math")
+    not(kani)
 ))]
 mod sse2;
 
@@ -195,17 +162,12 @@ mod sse2;
     any(
         test,
         not(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))
-    ),
-    not(feature = "fast-math")
+    )
 ))]
 mod lanes;
 
 /// What the tests of every evaluation of the slice in lanes share.
-#[cfg(all(
-    test,
-    any(target_arch = "x86_64", target_arch = "aarch64"),
-    not(feature = "fast-math")
-))]
+#[cfg(all(test, any(target_arch = "x86_64", target_arch = "aarch64")))]
 mod tests {
     use super::super::slerp_f64::tests::{rare_pairs, unit};
     use super::Quat;

@@ -41,7 +41,7 @@ pub struct Op {
 }
 
 /// The features of the bench and size firmware: the peers, and `extra`
-/// (`fast-math` for rigtform's other backend) if given.
+/// (further Cargo features of rigtform) if given.
 fn bench_features(extra: Option<&str>) -> String {
     match extra {
         Some(extra) => format!("peers,{extra}"),

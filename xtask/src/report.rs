@@ -19,9 +19,6 @@ const COMPARE: &str = "rigtform-compare";
 const BENCH: &str = "ops";
 /// Its accuracy report.
 const ACCURACY: &str = "accuracy";
-/// The criterion filter of the fast-math run: rigtform's functions only
-/// (the peers do not change with rigtform's backend).
-const FAST_MATH_FILTER: &str = r"rigtform \(fast-math\)";
 
 /// The performance page, from the repository's root.
 const PAGE: &str = "docs/performance.md";
@@ -38,8 +35,7 @@ pub fn perf_report(draws: u64) -> Result<()> {
     say("Cortex-M4F: instruction counts, then the flash builds");
     let ops = m4f::with_flash(m4f::counts(None)?, None)?;
     let inputs = m4f::inputs(&ops)?;
-    let accurate = accuracy(draws, false)?;
-    let accurate_fast = accuracy(draws, true)?;
+    let accurate = accuracy(draws)?;
 
     let mut s = String::new();
     writeln!(
@@ -66,10 +62,8 @@ pub fn perf_report(draws: u64) -> Result<()> {
     )?;
     s += "that calling the operation adds to a firmware (glam and nalgebra with libm):\n\n";
     s += &m4f::table(&ops);
-    s += "\nAccuracy, default backend and peers:\n\n";
+    s += "\nAccuracy, beside the peers:\n\n";
     s += &accurate;
-    s += "Accuracy with `fast-math`:\n\n";
-    s += &accurate_fast;
     s += page::END;
     s += "\n";
 
@@ -79,8 +73,7 @@ pub fn perf_report(draws: u64) -> Result<()> {
     Ok(())
 }
 
-/// `cargo bench -p rigtform-compare --bench ops`, with the default backend
-/// and then rigtform's functions with `fast-math`; the table of medians per
+/// `cargo bench -p rigtform-compare --bench ops`; the table of medians per
 /// call, rows and columns in the order the bench lists its benchmarks.
 fn host_table() -> Result<String> {
     let target = target_directory()?;
@@ -89,29 +82,18 @@ fn host_table() -> Result<String> {
         say(format!("removing the old results in {}", results.display()));
         std::fs::remove_dir_all(&results)?;
     }
-    let bench = |features: Option<&str>, args: &[&str]| {
+    let bench = |args: &[&str]| {
         let mut cmd = tools::cargo();
         cmd.current_dir(tools::root())
             .args(["bench", "-p", COMPARE, "--bench", BENCH]);
-        if let Some(f) = features {
-            cmd.args(["--features", f]);
-        }
         cmd.arg("--").args(args);
         cmd
     };
     say(format!(
         "host: cargo bench -p {COMPARE} --bench {BENCH} (several minutes)"
     ));
-    let mut listed = criterion::listed(&tools::stdout_of(&mut bench(None, &["--list"]))?);
-    tools::run(&mut bench(None, &[]))?;
-    say(format!(
-        "host: cargo bench -p {COMPARE} --features fast-math --bench {BENCH} -- '{FAST_MATH_FILTER}'"
-    ));
-    listed.extend(criterion::listed(&tools::stdout_of(&mut bench(
-        Some("fast-math"),
-        &["--list", FAST_MATH_FILTER],
-    ))?));
-    tools::run(&mut bench(Some("fast-math"), &[FAST_MATH_FILTER]))?;
+    let listed = criterion::listed(&tools::stdout_of(&mut bench(&["--list"]))?);
+    tools::run(&mut bench(&[]))?;
     criterion::host_table(&listed, &criterion::read_all(&results)?)
 }
 
@@ -130,9 +112,9 @@ fn target_directory() -> Result<std::path::PathBuf> {
         .context("cargo metadata names no target directory")
 }
 
-/// The accuracy report's tables on `draws` draws per class (rigtform's
-/// only, with fast-math), without its leading comment line.
-fn accuracy(draws: u64, fast_math: bool) -> Result<String> {
+/// The accuracy report's tables on `draws` draws per class, without its
+/// leading comment line.
+fn accuracy(draws: u64) -> Result<String> {
     let mut cmd = tools::cargo();
     cmd.current_dir(tools::root()).args([
         "run",
@@ -143,21 +125,9 @@ fn accuracy(draws: u64, fast_math: bool) -> Result<String> {
         "--bin",
         ACCURACY,
     ]);
-    if fast_math {
-        cmd.args(["--features", "fast-math"]);
-    }
     cmd.args(["--", &draws.to_string()]);
-    if fast_math {
-        cmd.arg("--rigtform-only");
-    }
     say(format!(
-        "accuracy: cargo run --release -p {COMPARE} --bin {ACCURACY}{} -- {draws}{}",
-        if fast_math {
-            " --features fast-math"
-        } else {
-            ""
-        },
-        if fast_math { " --rigtform-only" } else { "" }
+        "accuracy: cargo run --release -p {COMPARE} --bin {ACCURACY} -- {draws}"
     ));
     Ok(without_leading_comment(&tools::stdout_of(&mut cmd)?).to_owned())
 }

@@ -6,7 +6,6 @@
 //! ```text
 //! cargo run --release -p rigtform-compare --bin accuracy                      # 200,000 draws per class
 //! cargo run --release -p rigtform-compare --bin accuracy -- 10000             # fewer (CI)
-//! cargo run --release -p rigtform-compare --features fast-math --bin accuracy -- 200000 --rigtform-only
 //! ```
 //!
 //! Errors are rotation angles in radians between the computed rotation and
@@ -52,11 +51,7 @@ fn slerps(rigtform_only: bool) -> Vec<(String, Slerp)> {
 }
 
 fn rigtform_name() -> String {
-    if cfg!(feature = "fast-math") {
-        "rigtform (fast-math)".into()
-    } else {
-        "rigtform".into()
-    }
+    "rigtform".into()
 }
 
 fn to64(q: [f32; 4]) -> na::Quaternion<f64> {

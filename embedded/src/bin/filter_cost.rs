@@ -2,8 +2,7 @@
 //! Cortex-M4F: each call sits between the markers of
 //! [`rigtform_embedded::measure`], after an empty bracket (the
 //! calibration), once each, past the filters' warm-up. Run it with
-//! `cargo xtask filter-cost` (`--features fast-math` for micromath's
-//! kernels), not directly. The first row also names the filter's state
+//! `cargo xtask filter-cost`, not directly. The first row also names the filter's state
 //! size (`state <bytes> bytes`, `size_of` on this target), which the xtask
 //! checks against its budget with the instruction counts.
 

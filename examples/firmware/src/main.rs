@@ -9,7 +9,7 @@
 //!
 //! ```text
 //! cd examples/firmware
-//! cargo build --release --target thumbv7em-none-eabihf [--features fast-math]
+//! cargo build --release --target thumbv7em-none-eabihf
 //! llvm-size target/thumbv7em-none-eabihf/release/rigtform-firmware-example
 //! ```
 

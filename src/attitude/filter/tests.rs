@@ -218,7 +218,7 @@ fn the_first_field_sets_the_heading_at_once() {
     let acc = truth.inv() * Cvec3::new(0.0, 0.0, G);
     let mut f = OrientationFilter::new(FilterParams::DEFAULT);
     let q = f.update_with_mag(Cvec3::ZERO, acc, truth.inv() * FIELD, 0.01);
-    // One atan2 and one sine-cosine: 1e-5 with libm, their errors with fast-math.
+    // One atan2 and one sine-cosine, or 1e-5.
     let tol = (accuracy::ATAN2_MAX_ABS_ERROR + 2.0 * accuracy::SIN_COS_MAX_ABS_ERROR).max(1e-5);
     assert!(q.angle_to(truth) < tol, "{q:?}");
 }
