@@ -102,6 +102,83 @@ impl RigTForm {
         x.is_nan() || y.is_nan() || z.is_nan() || self.r.is_nan()
     }
 
+    /// nalgebra's `Isometry3::face_towards`: the frame of an observer at
+    /// `eye` whose +z axis points at `target`, its y axis towards `up`.
+    /// That is [`look_at`](Self::look_at) turned half way round about its y
+    /// axis, since the notes' eye looks down -z: use `look_at` for a camera,
+    /// this for an object that faces what it looks at along +z.
+    ///
+    /// # Preconditions and accuracy
+    ///
+    /// Those of [`look_at`](Self::look_at); the half turn is exact.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, RigTForm};
+    /// let a = RigTForm::face_towards(Cvec3::ZERO, Cvec3::new(3.0, 0.0, 0.0), Cvec3::Y);
+    /// assert!((a.transform_vector(Cvec3::Z) - Cvec3::X).norm() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn face_towards(eye: Cvec3, target: Cvec3, up: Cvec3) -> Self {
+        let frame = Self::look_at(eye, target, up);
+        // A half turn about y, `[0, 0, 1, 0]` scalar last: `(x, y, z, w) *
+        // (0, 1, 0, 0)` with every product exact but for signs.
+        let r = frame.r;
+        Self::new(frame.t, Quat::from_xyzw(-r.z, r.w, r.x, -r.y))
+    }
+
+    /// nalgebra's `Isometry3::look_at_rh`: the view transform of an eye at
+    /// `eye` looking at `target`, world to eye, which takes `eye` to the
+    /// origin and `target` onto the -z axis. The inverse of the eye frame
+    /// [`look_at`](Self::look_at) returns; `Matrix4::from` of it is glam's
+    /// `Mat4::look_at_rh`.
+    ///
+    /// # Preconditions and accuracy
+    ///
+    /// Those of [`look_at`](Self::look_at) and [`inv`](Self::inv).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, RigTForm};
+    /// let view = RigTForm::look_at_rh(Cvec3::new(0.0, 0.0, 5.0), Cvec3::ZERO, Cvec3::Y);
+    /// assert!((view.transform_point(Cvec3::ZERO) - Cvec3::new(0.0, 0.0, -5.0)).norm() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn look_at_rh(eye: Cvec3, target: Cvec3, up: Cvec3) -> Self {
+        Self::look_at(eye, target, up).inv()
+    }
+
+    /// nalgebra's `Isometry3::to_homogeneous`: here `Matrix4::from(a)`.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Matrix4, RigTForm};
+    /// let a = RigTForm::from_rotation_x(0.3);
+    /// assert_eq!(a.to_homogeneous(), Matrix4::from(a));
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "use `Matrix4::from(a)` (or `Matrix4::from_rig_tform`)"
+    )]
+    #[inline]
+    #[must_use]
+    pub fn to_homogeneous(self) -> Matrix4 {
+        Matrix4::from_rig_tform(self)
+    }
+
+    /// nalgebra's `Isometry3::from_parts(translation, rotation)`: here
+    /// [`RigTForm::new(t, r)`](Self::new).
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// assert_eq!(RigTForm::from_parts(Cvec3::X, Quat::IDENTITY), RigTForm::new(Cvec3::X, Quat::IDENTITY));
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use `RigTForm::new(t, r)`")]
+    #[inline]
+    #[must_use]
+    pub const fn from_parts(t: Cvec3, r: Quat) -> Self {
+        Self::new(t, r)
+    }
+
     /// glam's and nalgebra's `inverse`: the notes call it `inv`.
     ///
     /// ```
@@ -372,6 +449,43 @@ mod tests {
             assert_eq!(RigTForm::from_rotation_translation(a.r, a.t), a);
         }
         assert_eq!(RigTForm::identity(), RigTForm::IDENTITY);
+    }
+
+    /// `face_towards` and `look_at_rh` mean what they mean in nalgebra:
+    /// +z towards the target, and the view transform.
+    #[test]
+    fn face_towards_and_look_at_rh_agree_with_nalgebra() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(35);
+        for _ in 0..10_000 {
+            let mut c = || rng.random_range(-10.0f32..10.0);
+            let (eye, target) = (Cvec3::new(c(), c(), c()), Cvec3::new(c(), c(), c()));
+            let up = Cvec3::new(c(), c(), c());
+            let sight = target - eye;
+            if sight.norm() < 1e-2 || up.normalize().cross(sight.normalize()).norm() < 0.1 {
+                continue;
+            }
+            let (ne, nt, nu) = (
+                na::Point3::new(eye.x, eye.y, eye.z),
+                na::Point3::new(target.x, target.y, target.z),
+                na::Vector3::new(up.x, up.y, up.z),
+            );
+            let iso = |i: na::Isometry3<f32>| {
+                let q = i.rotation.into_inner();
+                let t = i.translation.vector;
+                RigTForm::new(
+                    Cvec3::new(t.x, t.y, t.z),
+                    Quat::from_wxyz(q.w, q.i, q.j, q.k),
+                )
+            };
+            let theirs = iso(na::Isometry3::face_towards(&ne, &nt, &nu));
+            let ours = RigTForm::face_towards(eye, target, up);
+            assert!(ours.r.angle_to(theirs.r) < 1e-5, "{ours:?} {theirs:?}");
+            assert_eq!(ours.t, eye);
+            let theirs = iso(na::Isometry3::look_at_rh(&ne, &nt, &nu));
+            let ours = RigTForm::look_at_rh(eye, target, up);
+            assert!(ours.r.angle_to(theirs.r) < 1e-5);
+            assert!((ours.t - theirs.t).norm() < 1e-4 * (1.0 + eye.norm()));
+        }
     }
 
     #[test]
