@@ -119,6 +119,7 @@
 )]
 
 pub mod accuracy;
+pub mod animation;
 pub mod attitude;
 mod display;
 mod features;
