@@ -16,6 +16,9 @@
 //!   the filter's state size on the target; fails unless a 6D update takes
 //!   at most 1,600 instructions, a 9D update at most 2,200, and the state
 //!   at most 256 bytes. CI runs it.
+//! - `cargo xtask gltf-check`: rigtform's glTF keyframe samplers against
+//!   three.js's interpolants, on BoxAnimated and on random channels
+//!   ([`gltf_check`]); fails above 1e-6 rad or 1e-6. CI runs it.
 //! - `cargo xtask perf-report [--draws N]`: the tables of the performance
 //!   page, `docs/performance.md`: criterion's medians on the host (`cargo bench -p
 //!   rigtform-compare --bench ops`, then rigtform's functions with
@@ -43,6 +46,7 @@
 
 mod criterion;
 mod firmware;
+mod gltf_check;
 mod m4f;
 mod page;
 mod report;
@@ -91,6 +95,9 @@ enum Cmd {
         #[arg(long)]
         features: Option<String>,
     },
+    /// rigtform's glTF samplers against three.js's interpolants (npm ci of
+    /// tools/gltf-check, then node); fails above 1e-6
+    GltfCheck,
     /// Regenerates the tables of docs/performance.md (about 10 minutes)
     PerfReport {
         /// Draws per class of the accuracy report
@@ -126,6 +133,7 @@ fn run(command: Cmd) -> Result<()> {
         Cmd::Budget => m4f::budget()?,
         Cmd::FilterCost { features } => m4f::filter_budget(features.as_deref())?,
         Cmd::PerfReport { draws } => report::perf_report(draws)?,
+        Cmd::GltfCheck => gltf_check::gltf_check()?,
     }
     Ok(())
 }
