@@ -29,10 +29,11 @@
 //!   are laid out as glTF stores them: three per key, in-tangent, value,
 //!   out-tangent, so a channel of `n` keys has `3 n` values.
 //!
-//! Before the first key the result is the first key's value, from the last
-//! key's time on the last key's value (clamped, as glTF viewers do; the
-//! specification leaves it to the viewer). With one key every time gives
-//! that key.
+//! At a key's time the result is that key's value as stored, as the
+//! specification requires. Before the first key the result is the first
+//! key's value, from the last key's time on the last key's value (clamped,
+//! as glTF viewers do; the specification leaves it to the viewer). With one
+//! key every time gives that key.
 //!
 //! # Rotations more than a half turn apart
 //!
@@ -66,20 +67,28 @@
 //! evaluates the same formulas, in f64, rounding its results to f32. The
 //! differences this crate has to choose between:
 //!
-//! - At a key's time three.js evaluates the segment that starts there
-//!   (`u = 0`): the key's value, normalized for CUBICSPLINE rotations.
-//!   Beyond the keys it copies the first or last value as stored, not
-//!   normalized. This crate does the same.
+//! - At a key's time the specification requires the key's value as-is.
+//!   three.js evaluates the segment that starts there at `u = 0` instead:
+//!   the same value, but normalized for CUBICSPLINE rotations (a rounding
+//!   difference for unit keys, none for the others). This crate follows
+//!   the specification.
+//! - Beyond the keys three.js copies the first or last value as stored,
+//!   not normalized; the specification says nothing. This crate does as
+//!   three.js.
 //! - The specification asks for unit rotation keys; three.js does not
 //!   check. This crate does not either (see the preconditions of
 //!   [`Sampler::sample`]).
-//! - The specification requires key times to be strictly increasing and
-//!   every value finite; three.js does not check (its loader warns about
-//!   some cases only when asked to validate). [`Sampler::new`] rejects what
-//!   the specification forbids, with a [`SamplerError`].
+//! - The specification requires key times to be strictly increasing (and
+//!   not negative), every value finite and two keys at least for
+//!   CUBICSPLINE; three.js checks none of it. [`Sampler::new`] rejects
+//!   times that are not finite and strictly increasing, values that are
+//!   not finite and counts that do not fit, with a [`SamplerError`]; it
+//!   accepts negative times and a single CUBICSPLINE key (its value at
+//!   every time), whose meaning is plain.
 //!
 //! `cargo xtask gltf-check` samples the same channels with three.js and
-//! with these samplers and compares every sample (`tools/gltf-check/`).
+//! with these samplers and compares every sample (`tools/gltf-check/`),
+//! holding both to 1e-6 (rad for rotations).
 //!
 //! # Examples
 //!
@@ -408,10 +417,8 @@ impl<'a, T: Keyframe> Sampler<'a, T> {
     ///
     /// - Before the first key time: the first key's value; at or after the
     ///   last key time: the last key's value (as stored, not normalized).
-    /// - At a key's time (not the last): the segment that starts there,
-    ///   evaluated at `u = 0`, which is the key's value (exactly for STEP,
-    ///   LINEAR translations and LINEAR rotations; normalized for
-    ///   CUBICSPLINE rotations).
+    /// - At a key's time: that key's value, as stored (the specification
+    ///   asks for the value as-is, without interpolation).
     /// - Between two keys: the [interpolation](Interpolation) of the
     ///   [module docs](self).
     /// - A NaN `t` gives NaN (`Quat::NAN`, `Cvec3::NAN`).
@@ -471,6 +478,11 @@ impl<'a, T: Keyframe> Sampler<'a, T> {
         let (Some(&t0), Some(&t1)) = (self.times.get(k0), self.times.get(k1)) else {
             return T::NAN;
         };
+        if t == t0 {
+            // The specification: a requested time that is a key's time
+            // takes that key's value as-is, without interpolation.
+            return self.key(k0);
+        }
         let td = t1 - t0;
         let u = (t - t0) / td;
         match self.interpolation {

@@ -1,26 +1,10 @@
 //! Laws of the glTF keyframe samplers (`rigtform::animation::Sampler`):
 //! keys are hit, unit rotations in give unit rotations out, STEP is constant
 //! between keys, and the ends clamp.
-//!
-//! Angles between rotations are measured without a square root, as in
-//! `constructors.rs`: `sin^2(theta / 2) = 1 - (q . r)^2 / (|q|^2 |r|^2)`.
 
 use super::{norm2, within, yes_or_no, Verdict, ONE_STEP_NORM_TOL};
-use rigtform::accuracy::{MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR};
 use rigtform::animation::{Interpolation, Sampler};
 use rigtform::Quat;
-
-fn dot64(a: Quat, b: Quat) -> f64 {
-    f64::from(a.w) * f64::from(b.w)
-        + f64::from(a.x) * f64::from(b.x)
-        + f64::from(a.y) * f64::from(b.y)
-        + f64::from(a.z) * f64::from(b.z)
-}
-
-fn half_angle_sin2(q: Quat, r: Quat) -> f64 {
-    let d = dot64(q, r);
-    1.0 - d * d / (norm2(q) * norm2(r))
-}
 
 /// The value of key `k` of a sampler's values.
 fn key(interpolation: Interpolation, values: &[Quat], k: usize) -> Quat {
@@ -29,9 +13,9 @@ fn key(interpolation: Interpolation, values: &[Quat], k: usize) -> Quat {
     values.get(i).copied().unwrap_or(Quat::NAN)
 }
 
-/// At each key's time the sampler gives that key's rotation (exactly as
-/// stored but for CUBICSPLINE, which normalizes it); before the first key
-/// the first key and from the last on the last, as stored.
+/// At each key's time the sampler gives that key's rotation exactly as
+/// stored; before the first key the first key and from the last on the
+/// last, as stored.
 ///
 /// Preconditions: `times` and `values` make a valid sampler (the law
 /// checks that `Sampler::new` accepts them), the keys unit to
@@ -46,19 +30,10 @@ pub fn sampler_hits_its_keys(
     };
     let n = times.len();
     for (k, &t) in times.iter().enumerate() {
-        let want = key(interpolation, values, k);
-        let got = s.sample(t);
-        if interpolation == Interpolation::CubicSpline && k + 1 < n {
-            // Normalized: the same rotation, to the rounding of normalize.
-            let tol = f64::from(NORMALIZE_MAX_NORM_ERROR) + f64::from(MUL_MAX_ANGLE_ERROR);
-            within(
-                "sampler_hits_its_keys (cubic)",
-                half_angle_sin2(got, want),
-                tol * tol,
-            )?;
-        } else {
-            yes_or_no("sampler_hits_its_keys", got == want)?;
-        }
+        yes_or_no(
+            "sampler_hits_its_keys",
+            s.sample(t) == key(interpolation, values, k),
+        )?;
     }
     let (first, last) = s.span();
     yes_or_no(
