@@ -12,6 +12,10 @@
 //! inverse and interpolation) and the few [`Matrix4`]s a renderer still
 //! needs (projection, model-view, normal matrix).
 //!
+//! For renderers that play glTF 2.0 animations, [`animation`] has the
+//! format's keyframe samplers (STEP, LINEAR through slerp, CUBICSPLINE) over
+//! key times and rotation or translation and scale values.
+//!
 //! # Conventions
 //!
 //! - Quaternions are scalar first: `Quat { w, x, y, z }`, `Quat::new(w, x, y, z)`.
