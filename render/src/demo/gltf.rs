@@ -36,7 +36,7 @@ impl GltfDemo {
         let centre = (lo + hi) * 0.5;
         let radius = ((hi - lo).norm() * 0.5).max(1e-3);
         let fovy = 0.8f32;
-        let distance = 0.9 * radius / (0.5 * fovy).sin();
+        let distance = radius / (0.5 * fovy).sin();
         let direction = Cvec3::new(0.55, 0.45, 1.0).normalize();
         let mut camera = Camera::looking_at(centre + direction * distance, centre, fovy);
         camera.near = (distance - 2.0 * radius).max(distance * 1e-3);
