@@ -21,6 +21,10 @@
 //!   OpenGL matrices ([`Matrix4::to_cols_array`] goes straight to
 //!   `glUniformMatrix4fv`).
 //!
+//! For renderers that play glTF 2.0 animations, [`animation`] has the
+//! format's keyframe samplers (STEP, LINEAR through slerp, CUBICSPLINE) over
+//! key times and rotation or translation and scale values.
+//!
 //! # Conventions
 //!
 //! - The notes write quaternions scalar first, `[w, c]`: a rotation by
@@ -209,6 +213,7 @@
 )]
 
 pub mod accuracy;
+pub mod animation;
 pub mod attitude;
 mod display;
 mod features;

@@ -22,6 +22,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BenchmarkGroup, Criterion, Throughput};
+use rigtform::animation::{Interpolation, Sampler};
 use rigtform::{Cvec4, Matrix4, Quat, RigTForm};
 use rigtform_compare::*;
 
@@ -95,6 +96,31 @@ fn each_pair<I: Copy, O>(f: impl Fn(I, I, f32) -> O) -> impl Fn(&[I], &[I], f32,
             *o = f(a, b, alpha);
         }
     }
+}
+
+/// A glTF rotation channel for the sampler benchmarks, kept: eight key
+/// times 0.5 to 1.5 s apart, the keys (`qs`), the CUBICSPLINE values (the
+/// keys with in- and out-tangents from `tangents`), and a time for every
+/// input, spread over the channel by `alphas`.
+#[allow(clippy::type_complexity)]
+fn channel<Q: Copy + 'static>(
+    qs: &[Q],
+    tangents: &[Q],
+    alphas: &[f32],
+) -> (&'static [f32], &'static [Q], &'static [Q], &'static [f32]) {
+    let times: Vec<f32> = (0..8).map(|i| i as f32 + 0.5 * alphas[i]).collect();
+    let keys: Vec<Q> = qs[..8].to_vec();
+    let cubic: Vec<Q> = (0..24)
+        .map(|i| if i % 3 == 1 { qs[i / 3] } else { tangents[i] })
+        .collect();
+    let span = times[7] - times[0];
+    let at: Vec<f32> = alphas.iter().map(|a| times[0] + a * span).collect();
+    (
+        keep(times).as_slice(),
+        keep(keys).as_slice(),
+        keep(cubic).as_slice(),
+        keep(at).as_slice(),
+    )
 }
 
 /// `value`, kept for the rest of the process (the jobs refer to it).
@@ -197,6 +223,39 @@ macro_rules! glam_benches {
             let (a, b, c) = (p0.slerp(p1, u), p1.slerp(p2, u), p2.slerp(p3, u));
             a.slerp(b, u).slerp(b.slerp(c, u), u)
         });
+        // No sampler in glam: what a glam user writes for one, the key
+        // found by the same search, then glam's slerp, or the Hermite sum
+        // on Vec4s and a normalize.
+        {
+            let (times, keys, cubic, at) = channel(&p.q, &p.b, &$inp.alpha);
+            let segment = move |t: f32| {
+                let k1 = times.partition_point(|&k| k <= t).clamp(1, times.len() - 1);
+                let (t0, t1) = (times[k1 - 1], times[k1]);
+                (k1, t1 - t0, ((t - t0) / (t1 - t0)).clamp(0.0, 1.0))
+            };
+            run($c, "glTF LINEAR rotation, 8 keys", name, at, move |t| {
+                let (k1, _, u) = segment(t);
+                keys[k1 - 1].slerp(keys[k1], u)
+            });
+            run(
+                $c,
+                "glTF CUBICSPLINE rotation, 8 keys",
+                name,
+                at,
+                move |t| {
+                    let (k1, td, u) = segment(t);
+                    let v = |i: usize| $glam::Vec4::from(cubic[i].to_array());
+                    let (uu, uuu) = (u * u, u * u * u);
+                    let s2 = -2.0 * uuu + 3.0 * uu;
+                    let s3 = uuu - uu;
+                    let sum = v(3 * k1 - 2) * (1.0 - s2)
+                        + v(3 * k1 - 1) * (td * (s3 - uu + u))
+                        + v(3 * k1 + 1) * s2
+                        + v(3 * k1) * (td * s3);
+                    $glam::Quat::from_vec4(sum.normalize())
+                },
+            );
+        }
         run(
             $c,
             "RigTForm * RigTForm",
@@ -291,6 +350,20 @@ fn quat_ops(c: &mut Criterion) {
         run(jobs, "catmull_rom", name, &p.q4a, |(keys, t)| {
             Quat::catmull_rom(&keys, 1.0 + t)
         });
+        // A glTF rotation channel of eight keys sampled at times spread
+        // over it: the sampler made once, each call a search and a slerp
+        // (LINEAR) or a Hermite sum and a normalize (CUBICSPLINE).
+        let (times, keys, cubic, at) = channel(&p.q, &p.b, &inp.alpha);
+        let linear =
+            keep(Sampler::new(Interpolation::Linear, times, keys).expect("a valid channel"));
+        let spline =
+            keep(Sampler::new(Interpolation::CubicSpline, times, cubic).expect("a valid channel"));
+        run(jobs, "glTF LINEAR rotation, 8 keys", name, at, |t| {
+            linear.sample(t)
+        });
+        run(jobs, "glTF CUBICSPLINE rotation, 8 keys", name, at, |t| {
+            spline.sample(t)
+        });
         run(jobs, "RigTForm * RigTForm", name, &p.tf2, |(a, b)| a * b);
         run(jobs, "RigTForm inv", name, &p.tf, RigTForm::inv);
         run(jobs, "RigTForm * point", name, tfc, |(a, p)| a * p);
@@ -328,7 +401,7 @@ fn quat_ops(c: &mut Criterion) {
 /// The operations, in the order they are run and tabulated (`cargo xtask
 /// perf-report` takes the performance page's rows in the order `--list` prints
 /// them).
-const OPS: [&str; 19] = [
+const OPS: [&str; 21] = [
     "q*q",
     "q*q renormalized",
     "rotate Cvec3",
@@ -340,6 +413,8 @@ const OPS: [&str; 19] = [
     "nlerp",
     "blend of 4",
     "catmull_rom",
+    "glTF LINEAR rotation, 8 keys",
+    "glTF CUBICSPLINE rotation, 8 keys",
     "RigTForm * RigTForm",
     "RigTForm inv",
     "RigTForm * point",

@@ -4,6 +4,7 @@
 //! it. Every operation has one signature, so that the bench can walk a
 //! table and the size binary can name one.
 
+use rigtform::animation::{Interpolation, Sampler};
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 
 /// The inputs of every operation: two unit quaternions, two vectors (also
@@ -127,6 +128,98 @@ pub fn rigtform_rig_catmull_rom(x: &Input, o: &mut Output) {
     ];
     let frames: [RigTForm; 4] = core::array::from_fn(|i| RigTForm::new(t[i], r[i]));
     rig_out(o, RigTForm::catmull_rom(&frames, 1.0 + x.t));
+}
+/// A glTF rotation channel of eight keys (turns about one axis, 0.35 rad
+/// apart as quaternions), at times 0.5 to 0.9 s apart.
+const GLTF_TIMES: [f32; 8] = [0.0, 0.6, 1.5, 2.1, 3.0, 3.9, 4.4, 5.2];
+const GLTF_KEYS: [Quat; 8] = [
+    Quat {
+        w: 1.0,
+        x: 0.0,
+        y: 0.0,
+        z: 0.0,
+    },
+    Quat {
+        w: 0.939_372_7,
+        x: 0.205_738_7,
+        y: 0.0,
+        z: 0.274_318_25,
+    },
+    Quat {
+        w: 0.764_842_2,
+        x: 0.386_530_6,
+        y: 0.0,
+        z: 0.515_374_1,
+    },
+    Quat {
+        w: 0.497_571_05,
+        x: 0.520_453_94,
+        y: 0.0,
+        z: 0.693_938_6,
+    },
+    Quat {
+        w: 0.169_967_14,
+        x: 0.591_269_84,
+        y: 0.0,
+        z: 0.788_359_8,
+    },
+    Quat {
+        w: -0.178_246_06,
+        x: 0.590_391_6,
+        y: 0.0,
+        z: 0.787_188_8,
+    },
+    Quat {
+        w: -0.504_846_1,
+        x: 0.517_925_6,
+        y: 0.0,
+        z: 0.690_567_5,
+    },
+    Quat {
+        w: -0.770_231_25,
+        x: 0.382_658_8,
+        y: 0.0,
+        z: 0.510_211_8,
+    },
+];
+/// The same keys as CUBICSPLINE values, each between an in- and an
+/// out-tangent (the same small one).
+const GLTF_CUBIC: [Quat; 24] = {
+    const T: Quat = Quat {
+        w: -0.2,
+        x: 0.1,
+        y: 0.05,
+        z: 0.15,
+    };
+    let mut v = [T; 24];
+    let mut k = 0;
+    while k < 8 {
+        v[3 * k + 1] = GLTF_KEYS[k];
+        k += 1;
+    }
+    v
+};
+/// Checking the channel alone (`Sampler::new`: eight times, eight keys).
+pub fn rigtform_gltf_new(_x: &Input, o: &mut Output) {
+    let ok = Sampler::new(Interpolation::Linear, &GLTF_TIMES, &GLTF_KEYS).is_ok();
+    o[0] = f32::from(u8::from(ok));
+}
+/// Checking the CUBICSPLINE channel alone (eight times, 24 values).
+pub fn rigtform_gltf_new_cubic(_x: &Input, o: &mut Output) {
+    let ok = Sampler::new(Interpolation::CubicSpline, &GLTF_TIMES, &GLTF_CUBIC).is_ok();
+    o[0] = f32::from(u8::from(ok));
+}
+/// Checking the LINEAR channel and sampling it once, at a time from `t`.
+pub fn rigtform_gltf_linear(x: &Input, o: &mut Output) {
+    if let Ok(s) = Sampler::new(Interpolation::Linear, &GLTF_TIMES, &GLTF_KEYS) {
+        q_out(o, s.sample(5.2 * x.t));
+    }
+}
+/// Checking the CUBICSPLINE channel and sampling it once.
+pub fn rigtform_gltf_cubic(x: &Input, o: &mut Output) {
+    if let Ok(s) = Sampler::new(Interpolation::CubicSpline, &GLTF_TIMES, &GLTF_CUBIC) {
+        q_out(o, s.sample(5.2 * x.t));
+    }
 }
 pub fn rigtform_matrix(x: &Input, o: &mut Output) {
     put(o, &Matrix4::from(rig(x).0).to_cols_array());
@@ -296,6 +389,22 @@ pub const OPS: &[Entry] = &[
     entry!("nlerp", "glam", glam_nlerp),
     entry!("nlerp", "nalgebra", nalgebra_nlerp),
     entry!("q * q renormalized", "rigtform", rigtform_mul_renormalized),
+    entry!("glTF sampler new, 8 keys", "rigtform", rigtform_gltf_new),
+    entry!(
+        "glTF sampler new, 8 keys of CUBICSPLINE",
+        "rigtform",
+        rigtform_gltf_new_cubic
+    ),
+    entry!(
+        "glTF LINEAR rotation (new + sample)",
+        "rigtform",
+        rigtform_gltf_linear
+    ),
+    entry!(
+        "glTF CUBICSPLINE rotation (new + sample)",
+        "rigtform",
+        rigtform_gltf_cubic
+    ),
     entry!("RigTForm * RigTForm", "rigtform", rigtform_rig_mul),
     entry!("RigTForm * RigTForm", "nalgebra", nalgebra_rig_mul),
     entry!("RigTForm inv", "rigtform", rigtform_rig_inv),

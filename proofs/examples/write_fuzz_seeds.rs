@@ -102,7 +102,26 @@ fn main() -> std::io::Result<()> {
     let mut rigid = Vec::new();
     let mut matrix = Vec::new();
     let mut constructors = Vec::new();
+    let mut sampler = Vec::new();
     for (i, e) in EDGE_F32.into_iter().enumerate() {
+        // Key times with one edge value, identity keys with one edge
+        // component, each interpolation and key count (the selector's
+        // bits), and an edge time.
+        let mut values = [0.0f32; 48];
+        for q in values.chunks_exact_mut(4) {
+            q[3] = 1.0;
+        }
+        values[i % 48] = e;
+        for selector in [0u32, 1, 2, 13, 14, 15] {
+            sampler.push(bytes(
+                &[
+                    [0.0, 0.5, e, 2.0].as_slice(),
+                    &values,
+                    &[f32::from_bits(selector), e],
+                ]
+                .concat(),
+            ));
+        }
         // The atan2 edge cases: w itself, a tiny or huge vector part beside
         // w = +-1 or 0, every component alike, and e as the exponent.
         pow.push(bytes(&[e, 0.0, 0.0, 0.0, 0.5]));
@@ -198,5 +217,6 @@ fn main() -> std::io::Result<()> {
     write("rigtform", rigid)?;
     write("matrix", matrix)?;
     write("constructors", constructors)?;
+    write("sampler", sampler)?;
     regressions()
 }

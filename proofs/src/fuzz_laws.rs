@@ -135,3 +135,63 @@ pub fn slerp(a: [f32; 4], b: [f32; 4], c: [f32; 4], alpha: f32, weights: [f32; 3
 fn wxyz([w, x, y, z]: [f32; 4]) -> Quat {
     Quat::from_wxyz(w, x, y, z)
 }
+
+/// The `sampler` target on four raw key times, 48 raw values (twelve
+/// quaternions as x, y, z, w, glTF's order), a selector (its bits pick the
+/// interpolation and the number of keys, 1 to 4) and a time: `Sampler::new`
+/// and `Sampler::sample` never panic on the raw data; on strictly
+/// increasing times made from the raw ones and the normalized values, the
+/// keys are hit, the ends clamp, samples are unit and STEP is constant
+/// between keys.
+///
+/// ```
+/// let mut values = [0.0f32; 48];
+/// for q in values.chunks_exact_mut(4) {
+///     q[3] = 1.0;
+/// }
+/// rigtform_proofs::fuzz_laws::sampler([0.0, 1.0, 2.0, 3.0], values, 2.0, 1.5);
+/// ```
+pub fn sampler(times: [f32; 4], values: [f32; 48], selector: f32, t: f32) {
+    use rigtform::animation::{Interpolation, Sampler};
+    let bits = selector.to_bits();
+    let interpolation = match bits % 3 {
+        0 => Interpolation::Step,
+        1 => Interpolation::Linear,
+        _ => Interpolation::CubicSpline,
+    };
+    let n = 1 + (bits >> 2) as usize % 4;
+    let raw: [Quat; 12] = core::array::from_fn(|i| {
+        let c = |k: usize| values.get(4 * i + k).copied().unwrap_or(0.0);
+        Quat {
+            x: c(0),
+            y: c(1),
+            z: c(2),
+            w: c(3),
+        }
+    });
+    let count = n * interpolation.values_per_key();
+    // The raw bits: an error or a sample, never a panic.
+    if let Ok(s) = Sampler::new(interpolation, &times[..n], &raw[..count]) {
+        let _ = s.sample(t);
+    }
+    // A valid channel from the same bits: key i at i plus a fraction.
+    let valid_times: [f32; 4] = core::array::from_fn(|i| {
+        let f = times[i];
+        i as f32
+            + if f.is_finite() {
+                libm::fabsf(f) % 1.0 * 0.75
+            } else {
+                0.0
+            }
+    });
+    let units = raw.map(|q| unit(q).unwrap_or(Quat::IDENTITY));
+    let (times, units) = (&valid_times[..n], &units[..count]);
+    assert_holds(laws::sampler_hits_its_keys(interpolation, times, units));
+    let at = if t.is_finite() { t } else { 0.5 };
+    assert_holds(laws::sampler_is_unit(interpolation, times, units, at));
+    if interpolation == Interpolation::Step {
+        assert_holds(laws::step_sampler_is_constant_between_keys(
+            times, units, at,
+        ));
+    }
+}

@@ -771,3 +771,40 @@ fn rotation_arc_takes_from_to_to() {
         assert_holds(laws::rotation_arc_takes_from_to_to(from, to));
     });
 }
+
+/// STEP samplers only pick keys: at each key's time, between keys and
+/// beyond both ends, a key bit for bit. Every finite bit pattern of up to
+/// three keys, every strictly increasing finite key times, every time but
+/// NaN. What keeps it tractable: on STEP's path the sampler compares times
+/// and computes one subtraction and one division of finite times (the
+/// segment's `u`, unused), and copies a key.
+#[cfg_attr(kani, kani::proof)]
+#[cfg_attr(kani, kani::unwind(5))]
+#[cfg_attr(not(kani), test)]
+fn step_sampler_copies_its_keys() {
+    use rigtform::animation::{Interpolation, Sampler};
+    check("step_sampler_copies_its_keys", || {
+        let keys = [any_quat_bits(), any_quat_bits(), any_quat_bits()];
+        let times: [f32; 3] = [kani::any(), kani::any(), kani::any()];
+        // Solver bound: one to three keys.
+        let n = (kani::any::<u32>() % 3 + 1) as usize;
+        let (times, keys) = (&times[..n], &keys[..n]);
+        // Precondition: a channel Sampler::new accepts.
+        kani::assume(Sampler::new(Interpolation::Step, times, keys).is_ok());
+        let t: f32 = kani::any();
+        // Precondition: a time that is not NaN.
+        kani::assume(!t.is_nan());
+        kani::cover!(
+            n == 3 && times[0] < t && t < times[2] && t != times[1],
+            "between keys"
+        );
+        kani::cover!(t < times[0], "before the first key");
+        kani::cover!(t > times[n - 1], "after the last key");
+        assert_holds(laws::sampler_hits_its_keys(
+            Interpolation::Step,
+            times,
+            keys,
+        ));
+        assert_holds(laws::step_sampler_is_constant_between_keys(times, keys, t));
+    });
+}

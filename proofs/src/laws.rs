@@ -19,7 +19,11 @@
 use rigtform::accuracy::{INVERSE_MAX_REL_ERROR, ROTATE_MAX_REL_ERROR, UNIT_NORM_ERROR};
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 
+mod animation;
 mod constructors;
+pub use animation::{
+    sampler_hits_its_keys, sampler_is_unit, step_sampler_is_constant_between_keys,
+};
 pub use constructors::{
     euler_angles_give_back_the_rotation, from_matrix_inverts_from_quat,
     rotation_arc_takes_from_to_to,

@@ -66,6 +66,11 @@ fn replay(target: &str, input: &[u8]) -> bool {
             let weights = bytes.trailing_array::<3>();
             fuzz_laws::slerp(a, b, c, alpha, weights);
         }
+        "sampler" => {
+            let (times, values) = (bytes.array::<4>(), bytes.array::<48>());
+            let (selector, t) = (bytes.f32(), bytes.f32());
+            fuzz_laws::sampler(times, values, selector, t);
+        }
         _ => return false,
     }
     true
@@ -143,4 +148,18 @@ fn the_slerp_pairs_are_exactly_pi_apart() {
 /// Four floats of a regression, scalar first, as the fuzz targets read them.
 fn wxyz([w, x, y, z]: [f32; 4]) -> Quat {
     Quat::from_wxyz(w, x, y, z)
+}
+
+/// The sampler target's committed seeds (`fuzz/seeds/sampler/`: every
+/// interpolation and key count beside edge times and values) keep its laws
+/// here too, where CI runs them without a fuzzer.
+#[test]
+fn sampler_seeds_keep_the_targets_laws() {
+    let dir = regressions().join("../seeds/sampler");
+    let seeds = files(&dir);
+    assert!(seeds.len() >= 100, "only {} sampler seeds", seeds.len());
+    for file in seeds {
+        let input = fs::read(&file).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+        assert!(replay("sampler", &input));
+    }
 }

@@ -29,7 +29,9 @@
 //! bytes out whatever the number of threads. [`demo`] builds the demo's
 //! animation and pictures on top of it: the staging every panel shares,
 //! the comparison of [`demo::bad_ideas`] and its
-//! [`interpolation`](demo::interpolation) methods.
+//! [`interpolation`](demo::interpolation) methods. [`gltf_scene`] reads
+//! glTF files (with the `gltf` crate) and plays their animations through
+//! `rigtform::animation`'s samplers, for [`demo::gltf`].
 //!
 //! A *frame* is one picture of the animation (`frames/frame_000.png`).
 //! Where an object is in the world is its [`Placement`]; coordinate frames
@@ -61,6 +63,7 @@ pub mod clip;
 pub mod demo;
 pub mod fragment;
 pub mod framebuffer;
+pub mod gltf_scene;
 pub mod image;
 pub mod mesh;
 pub mod output;

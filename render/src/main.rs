@@ -8,10 +8,12 @@ use std::time::Instant;
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
+use rigtform_render::demo::gltf::{self, GltfDemo};
 use rigtform_render::demo::spline::{self, Keyed, SplineDemo};
 use rigtform_render::demo::{
-    contact_sheet, gif_sequence, load_body, sheet_frames, Comparison, Demo,
+    contact_sheet, gif_sequence, labelled_contact_sheet, load_body, sheet_frames, Comparison, Demo,
 };
+use rigtform_render::gltf_scene::GltfScene;
 use rigtform_render::output::{write_gif, write_png};
 use rigtform_render::{Cull, Image, Msaa, Settings};
 
@@ -65,6 +67,13 @@ struct Args {
     /// angular speed (angular_speed.png).
     #[arg(long, conflicts_with = "comparison")]
     spline: bool,
+
+    /// Play a glTF 2.0 file's animation instead (.gltf with its buffers
+    /// inline or beside it, or .glb): every channel of every animation on
+    /// one clock, from the earliest key to the latest, through rigtform's
+    /// samplers. Skins and morph targets are not played (a note says so).
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["comparison", "spline", "obj"])]
+    gltf: Option<PathBuf>,
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -105,6 +114,71 @@ fn remove_old_frames(dir: &Path) -> std::io::Result<()> {
     Ok(())
 }
 
+/// `--gltf`: loads and checks the whole file before anything is written,
+/// then renders its animation into frames, a contact sheet and a GIF.
+fn run_gltf(args: &Args, path: &Path, start: Instant) -> Result<String, String> {
+    let scene = GltfScene::load(path)?;
+    for note in &scene.unsupported {
+        eprintln!("note: {}: {note}", path.display());
+    }
+    let title = path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let demo = GltfDemo::new(scene, title);
+    let (t0, t1) = demo.scene().span();
+    let settings = Settings {
+        width: args.size.0,
+        height: args.size.1,
+        msaa: if args.msaa == 4 { Msaa::X4 } else { Msaa::Off },
+        cull: Cull::Back,
+    };
+    let frames_dir = args.out.join("frames");
+    std::fs::create_dir_all(&frames_dir)
+        .map_err(|e| format!("cannot create {}: {e}", frames_dir.display()))?;
+    remove_old_frames(&frames_dir)
+        .map_err(|e| format!("cannot clean {}: {e}", frames_dir.display()))?;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.threads.unwrap_or(0) as usize)
+        .build()
+        .map_err(|e| format!("cannot start threads: {e}"))?;
+    let images: Vec<Image> = pool.install(|| {
+        (0..args.frames)
+            .into_par_iter()
+            .map(|i| {
+                let image = demo.render_frame(demo.time(i, args.frames), &settings);
+                write_png(&frames_dir.join(format!("frame_{i:03}.png")), &image)
+                    .map_err(|e| e.to_string())?;
+                Ok(image)
+            })
+            .collect::<Result<_, String>>()
+    })?;
+    let rows: Vec<(f32, &Image)> = sheet_frames(args.frames, args.sheet_rows)
+        .into_iter()
+        .map(|i| (demo.time(i, args.frames), &images[i as usize]))
+        .collect();
+    let sheet_path = args.out.join("contact_sheet.png");
+    write_png(&sheet_path, &labelled_contact_sheet(&rows, "t (s)")).map_err(|e| e.to_string())?;
+    let mut written = format!(
+        "{} frames of {} channel(s), {t0:.3} s to {t1:.3} s, in {}, {}",
+        args.frames,
+        demo.scene().channels.len(),
+        frames_dir.display(),
+        sheet_path.display()
+    );
+    if !args.no_gif {
+        let gif_path = args.out.join("animation.gif");
+        let sequence = gltf::gif_sequence(args.frames, t1 - t0);
+        pool.install(|| write_gif(&gif_path, &images, &sequence))
+            .map_err(|e| e.to_string())?;
+        written += &format!(", {}", gif_path.display());
+    }
+    Ok(format!(
+        "wrote {written} in {:.2} s",
+        start.elapsed().as_secs_f64()
+    ))
+}
+
 fn run(args: &Args) -> Result<String, String> {
     let start = Instant::now();
     if args.sheet_rows > args.frames {
@@ -112,6 +186,9 @@ fn run(args: &Args) -> Result<String, String> {
             "--sheet-rows {} is more than --frames {}",
             args.sheet_rows, args.frames
         ));
+    }
+    if let Some(path) = &args.gltf {
+        return run_gltf(args, path, start);
     }
     let body = args.obj.as_deref().map(load_body).transpose()?;
     let spline_demo = args.spline.then(|| SplineDemo::new(body.clone()));

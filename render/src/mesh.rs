@@ -287,7 +287,7 @@ impl Mesh {
 
     /// Area-weighted vertex normals from the triangles (the cross product of
     /// two edges is twice the area times the unit normal).
-    fn face_averaged_normals(&self) -> Vec<Cvec3> {
+    pub(crate) fn face_averaged_normals(&self) -> Vec<Cvec3> {
         let mut normals = vec![Cvec3::ZERO; self.positions.len()];
         for t in &self.triangles {
             let [a, b, c] = t.map(|i| self.positions.get(i as usize).copied());

@@ -11,16 +11,18 @@
 //! - `cargo xtask budget`: the counts, then slerp's flash at opt-level "s";
 //!   fails unless rigtform's slerp takes at most 400 instructions per call
 //!   and 2048 bytes. CI runs it.
-//! - `cargo xtask filter-cost [--features fast-math]`: instructions per
+//! - `cargo xtask filter-cost [--features F]`: instructions per
 //!   call of the attitude updates (`embedded/src/bin/filter_cost.rs`) and
 //!   the filter's state size on the target; fails unless a 6D update takes
 //!   at most 1,600 instructions, a 9D update at most 2,200, and the state
 //!   at most 256 bytes. CI runs it.
+//! - `cargo xtask gltf-check`: rigtform's glTF keyframe samplers against
+//!   three.js's interpolants, on BoxAnimated and on random channels
+//!   ([`gltf_check`]); fails above 1e-6 rad or 1e-6. CI runs it.
 //! - `cargo xtask perf-report [--draws N]`: the tables of the performance
 //!   page, `docs/performance.md`: criterion's medians on the host (`cargo bench -p
-//!   rigtform-compare --bench ops`, then rigtform's functions with
-//!   `fast-math`), the Cortex-M4F table, and the accuracy report on
-//!   1,000,000 draws per class with each backend; written between the
+//!   rigtform-compare --bench ops`), the Cortex-M4F table, and the
+//!   accuracy report on 1,000,000 draws per class; written between the
 //!   page's `perf-report` markers, the page replaced only when all of it
 //!   succeeded.
 //!
@@ -43,6 +45,7 @@
 
 mod criterion;
 mod firmware;
+mod gltf_check;
 mod m4f;
 mod page;
 mod report;
@@ -75,8 +78,7 @@ enum Cmd {
         /// Only the instruction counts, no flash builds
         #[arg(long)]
         count_only: bool,
-        /// rigtform's features besides the peers (`fast-math` for
-        /// micromath's kernels)
+        /// rigtform's Cargo features besides the peers
         #[arg(long)]
         features: Option<String>,
     },
@@ -86,11 +88,13 @@ enum Cmd {
     /// Instructions per call of the attitude updates on the Cortex-M4F;
     /// fails unless they and the filter's state keep to their budgets
     FilterCost {
-        /// Cargo features of the firmware (`fast-math` for micromath's
-        /// kernels)
+        /// Cargo features of rigtform in the firmware
         #[arg(long)]
         features: Option<String>,
     },
+    /// rigtform's glTF samplers against three.js's interpolants (npm ci of
+    /// tools/gltf-check, then node); fails above 1e-6
+    GltfCheck,
     /// Regenerates the tables of docs/performance.md (about 10 minutes)
     PerfReport {
         /// Draws per class of the accuracy report
@@ -126,6 +130,7 @@ fn run(command: Cmd) -> Result<()> {
         Cmd::Budget => m4f::budget()?,
         Cmd::FilterCost { features } => m4f::filter_budget(features.as_deref())?,
         Cmd::PerfReport { draws } => report::perf_report(draws)?,
+        Cmd::GltfCheck => gltf_check::gltf_check()?,
     }
     Ok(())
 }

@@ -10,6 +10,7 @@ use cortex_m_rt::entry;
 use cortex_m_semihosting::hprintln;
 use panic_semihosting as _;
 use rigtform::accuracy::{POW_MAX_ANGLE_ERROR, SLERP_MAX_ANGLE_ERROR, UNIT_NORM_ERROR};
+use rigtform::animation::Interpolation;
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 use rigtform_embedded::{each, Tally};
 use rigtform_proofs::draw::Draws;
@@ -339,6 +340,45 @@ fn main() -> ! {
         let mut d = Draws::new(27);
         each(key_walks(28), |keys| {
             laws::catmull_rom_translation_is_the_cubic(&keys, d.uniform(-0.5, 3.5))
+        })
+    });
+
+    t.check("sampler_hits_its_keys and sampler_is_unit", || {
+        let mut d = Draws::new(29);
+        let kinds = [
+            Interpolation::Step,
+            Interpolation::Linear,
+            Interpolation::CubicSpline,
+        ];
+        each(key_walks(30), |keys| {
+            let r = keys.map(|k| k.r);
+            // Key times from 0.5 s, intervals of 0.05 to 2 s.
+            let mut time = 0.5;
+            let times: [f32; 4] = core::array::from_fn(|_| {
+                let now = time;
+                time += d.uniform(0.05, 2.0);
+                now
+            });
+            // CUBICSPLINE: tangents of up to 1 per component around the keys.
+            let mut tangent = || Quat {
+                x: d.uniform(-1.0, 1.0),
+                y: d.uniform(-1.0, 1.0),
+                z: d.uniform(-1.0, 1.0),
+                w: d.uniform(-1.0, 1.0),
+            };
+            let cubic: [Quat; 12] =
+                core::array::from_fn(|i| if i % 3 == 1 { r[i / 3] } else { tangent() });
+            let at = d.uniform(0.0, 7.0);
+            for kind in kinds {
+                let values: &[Quat] = if kind == Interpolation::CubicSpline {
+                    &cubic
+                } else {
+                    &r
+                };
+                laws::sampler_hits_its_keys(kind, &times, values)?;
+                laws::sampler_is_unit(kind, &times, values, at)?;
+            }
+            laws::step_sampler_is_constant_between_keys(&times, &r, at)
         })
     });
 

@@ -14,8 +14,11 @@
 //!   the library's `EulerRot::ZYX`).
 //! - [`spline`]: the keyframe comparison of `--spline`, with panels and a
 //!   plot of its own: slerp key to key beside the Catmull-Rom spline.
+//! - [`gltf`]: `--gltf`, a glTF file's animation played through the
+//!   library's samplers.
 
 pub mod bad_ideas;
+pub mod gltf;
 pub mod interpolation;
 pub mod spline;
 
@@ -278,6 +281,13 @@ pub fn load_body(path: &std::path::Path) -> Result<Mesh, String> {
 /// a margin on the left.
 #[must_use]
 pub fn contact_sheet(rows: &[(f32, &Image)]) -> Image {
+    labelled_contact_sheet(rows, "alpha")
+}
+
+/// Stacks frames into one picture, each row labelled with `label` and its
+/// value in a margin on the left.
+#[must_use]
+pub fn labelled_contact_sheet(rows: &[(f32, &Image)], label: &str) -> Image {
     let margin = 8 * 11 + 8;
     let gap = 4;
     let width = rows.iter().map(|(_, im)| im.width()).max().unwrap_or(0) + margin;
@@ -287,7 +297,7 @@ pub fn contact_sheet(rows: &[(f32, &Image)]) -> Image {
     for (alpha, image) in rows {
         sheet.blit(image, i64::from(margin), y);
         let mid = y + i64::from(image.height() / 2);
-        sheet.draw_text(4, mid - 10, "alpha", 1, [200, 200, 200]);
+        sheet.draw_text(4, mid - 10, label, 1, [200, 200, 200]);
         sheet.draw_text(4, mid + 2, &format!("{alpha:.3}"), 2, [240, 240, 240]);
         y += i64::from(image.height() + gap);
     }
