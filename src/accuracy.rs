@@ -68,6 +68,7 @@ mod backend {
     pub const IS_NORMALIZED_TOLERANCE: f32 = 1.0e-4;
     pub const EULER_MAX_ANGLE_ERROR: f32 = 8.4e-7; // 6.678e-7 (to_euler), 3.438e-7 (from_euler)
     pub const CATMULL_ROM_MAX_ANGLE_ERROR: f32 = 4.8e-7; // 3.849e-7 (5 keys, t over all of them)
+    pub const ANGLE_BETWEEN_MAX_ERROR: f32 = 4.2e-7; // 3.333e-7
 }
 
 /// micromath's kernels (`cargo test --features fast-math --tests -- --nocapture`).
@@ -87,6 +88,7 @@ mod backend {
     pub const IS_NORMALIZED_TOLERANCE: f32 = 1.0e-2;
     pub const EULER_MAX_ANGLE_ERROR: f32 = 7.9e-3; // 6.323e-3 (to_euler), 4.378e-3 (from_euler)
     pub const CATMULL_ROM_MAX_ANGLE_ERROR: f32 = 2.8e-2; // 2.246e-2
+    pub const ANGLE_BETWEEN_MAX_ERROR: f32 = 3.5e-3; // 2.828e-3 (micromath's atan2)
 }
 
 /// Relative error of the square root kernel (`src/float/sqrt.rs`, `sweep_sqrt`).
@@ -241,6 +243,17 @@ pub const INVERSE_MAX_REL_ERROR: f32 = 5.5e-7; // 4.171e-7
 /// Largest entry difference between `Matrix4::from_quat(q)`, for unit `q`,
 /// and the exact rotation matrix of `q`.
 pub const MATRIX_ENTRY_ERROR: f32 = 3.8e-7; // 3.000e-7
+/// Angle error, in radians, of
+/// [`Cvec3::angle_between`](crate::Cvec3::angle_between) against the exact
+/// angle between the same f32 vectors (nalgebra in f64, `src/vec.rs`'s
+/// tests): random pairs, and pairs 1e-7 to 1e-1 rad from parallel and
+/// from opposite, at scales 2^-40 to 2^40.
+pub const ANGLE_BETWEEN_MAX_ERROR: f32 = backend::ANGLE_BETWEEN_MAX_ERROR;
+/// Error of [`Cvec3::project_onto`](crate::Cvec3::project_onto) and
+/// [`Cvec3::reject_from`](crate::Cvec3::reject_from), relative to `|self|`,
+/// against the exact projection of the same f32 vectors (nalgebra in f64),
+/// random pairs at scales 2^-40 to 2^40.
+pub const PROJECT_MAX_REL_ERROR: f32 = 4.5e-7; // 3.619e-7 (reject_from), 3.612e-7 (project_onto)
 
 #[cfg(test)]
 mod tests {
