@@ -124,6 +124,7 @@ mod display;
 mod features;
 mod float;
 mod matrix;
+mod matrix3;
 mod quat;
 mod rigtform;
 mod vec;
@@ -141,6 +142,7 @@ pub mod kani_kernels {
 }
 
 pub use matrix::Matrix4;
+pub use matrix3::Matrix3;
 pub use quat::{EulerRot, Quat};
 pub use rigtform::RigTForm;
 pub use vec::{Cvec3, Cvec4};
