@@ -240,6 +240,19 @@ pub const CATMULL_ROM_MAX_ANGLE_ERROR: f32 = backend::CATMULL_ROM_MAX_ANGLE_ERRO
 /// norm), per unit of the matrix's condition number `|M| |M^-1|`: measured on
 /// random 4x4 matrices with entries in [-1, 1] and condition below 1e4.
 pub const INVERSE_MAX_REL_ERROR: f32 = 5.5e-7; // 4.171e-7
+/// Error of the translation of [`Matrix4::look_at_rh`](crate::Matrix4::look_at_rh),
+/// relative to `|eye|`, against nalgebra's f64 `Matrix4::look_at_rh` of the
+/// same f32 points (eyes and targets in a cube of half-side 100, `up` at
+/// least 0.1 rad off the line of sight).
+pub const LOOK_AT_RH_MAX_TRANSLATION_ERROR: f32 = 1.1e-6; // 8.405e-7
+/// Angle error, in radians, of the rotation of
+/// [`Matrix4::to_scale_rotation_translation`](crate::Matrix4::to_scale_rotation_translation)
+/// for `Matrix4::from_scale_rotation_translation(s, r, t)` with random unit
+/// `r` and scales of magnitude 1e-3 to 1e3 (the x scale of either sign),
+/// against `r`.
+pub const SRT_ROTATION_MAX_ANGLE_ERROR: f32 = 9.0e-7; // 7.084e-7
+/// Error of the scale of the same, relative to each input scale.
+pub const SRT_SCALE_MAX_REL_ERROR: f32 = 9.5e-7; // 7.610e-7
 /// Error of [`Matrix3::inverse`](crate::Matrix3::inverse) relative to the
 /// inverse's size (Frobenius norm), per unit of the matrix's condition
 /// number: random 3x3 matrices with entries in [-1, 1] and condition below
