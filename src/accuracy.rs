@@ -48,6 +48,13 @@
 //! | [`LOOK_AT_MAX_ANGLE_ERROR`] | 1.1e-6 | 1.1e-6 |
 //! | [`DETERMINANT_MAX_REL_ERROR`] | 5.3e-7 | 5.3e-7 |
 //! | [`CATMULL_ROM_MAX_ANGLE_ERROR`] | 4.8e-7 | 2.8e-2 |
+//! | [`ANGLE_BETWEEN_MAX_ERROR`] | 4.2e-7 | 3.5e-3 |
+//! | [`PROJECT_MAX_REL_ERROR`] | 4.5e-7 | 4.5e-7 |
+//! | [`MATRIX3_INVERSE_MAX_REL_ERROR`] | 2.5e-7 | 2.5e-7 |
+//! | [`MATRIX3_DETERMINANT_MAX_REL_ERROR`] | 2.5e-7 | 2.5e-7 |
+//! | [`LOOK_AT_RH_MAX_TRANSLATION_ERROR`] | 1.1e-6 | 1.1e-6 |
+//! | [`SRT_ROTATION_MAX_ANGLE_ERROR`] | 9.0e-7 | 9.0e-7 |
+//! | [`SRT_SCALE_MAX_REL_ERROR`] | 9.5e-7 | 9.5e-7 |
 
 /// The bounds that depend on the float backend (here the default f32
 /// kernels of `src/float/`): measured maxima over 10^7 draws in the
@@ -334,7 +341,41 @@ mod tests {
                 super::CATMULL_ROM_MAX_ANGLE_ERROR,
             ),
         ];
-        // Quoted in this module's table only (not yet in the README's).
+        // Quoted in this module's table only (not in the README's).
+        let module_only = [
+            ("ANGLE_BETWEEN_MAX_ERROR", super::ANGLE_BETWEEN_MAX_ERROR),
+            ("PROJECT_MAX_REL_ERROR", super::PROJECT_MAX_REL_ERROR),
+            (
+                "MATRIX3_INVERSE_MAX_REL_ERROR",
+                super::MATRIX3_INVERSE_MAX_REL_ERROR,
+            ),
+            (
+                "MATRIX3_DETERMINANT_MAX_REL_ERROR",
+                super::MATRIX3_DETERMINANT_MAX_REL_ERROR,
+            ),
+            (
+                "LOOK_AT_RH_MAX_TRANSLATION_ERROR",
+                super::LOOK_AT_RH_MAX_TRANSLATION_ERROR,
+            ),
+            (
+                "SRT_ROTATION_MAX_ANGLE_ERROR",
+                super::SRT_ROTATION_MAX_ANGLE_ERROR,
+            ),
+            ("SRT_SCALE_MAX_REL_ERROR", super::SRT_SCALE_MAX_REL_ERROR),
+        ];
+        let text = include_str!("accuracy.rs");
+        for (name, value) in module_only {
+            let row = text
+                .lines()
+                .find(|l| l.starts_with(&std::format!("//! | [`{name}`")))
+                .unwrap_or_else(|| panic!("{name} is missing from the table in src/accuracy.rs"));
+            let cell = row.split('|').nth(column + 1).unwrap_or_default().trim();
+            assert_eq!(
+                cell.parse(),
+                Ok(value),
+                "src/accuracy.rs: table row for {name}"
+            );
+        }
         let tables = [
             ("src/accuracy.rs", include_str!("accuracy.rs"), "//! | [`"),
             ("README.md", include_str!("../README.md"), "| `"),

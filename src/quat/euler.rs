@@ -162,8 +162,8 @@ impl Pair {
         }
     }
 
-    /// The inverse of [`to_xy`](Self::to_xy).
-    fn from_xy(self, q: Quat) -> Quat {
+    /// The inverse of [`to_xy`](Self::to_xy): back to the order's own axes.
+    fn back_from_xy(self, q: Quat) -> Quat {
         let Quat { w, x, y, z } = q;
         match self {
             Self::Xy => Quat::from_wxyz(w, x, y, z),
@@ -365,7 +365,7 @@ impl Quat {
                 w0 * sc + z0 * cc,
             )
         };
-        pair.from_xy(q)
+        pair.back_from_xy(q)
     }
 
     /// The Euler angles `(a, b, c)` of the rotation, about the axes of
