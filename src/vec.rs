@@ -800,10 +800,10 @@ macro_rules! everyday {
             ///
             /// # Accuracy
             ///
-            /// The difference is rounded once per component, then as
-            /// [`norm`](Self::norm): within about 2 ulp of the exact
-            /// distance of the f32 inputs plus 1 ulp of each component of
-            /// the difference. Infinite where the difference overflows.
+            /// [`norm`](Self::norm) of `self - other`, whose components are
+            /// each rounded once (half an ulp): within 2 ulp of the length
+            /// of that rounded difference. Infinite where a component of the
+            /// difference overflows.
             ///
             /// ```
             #[doc = concat!("use rigtform::", stringify!($t), ";")]
