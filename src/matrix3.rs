@@ -126,6 +126,19 @@ impl Matrix3 {
         Self::from(Matrix4::from_quat(q))
     }
 
+    /// The upper-left 3x3 block of `m` (glam's `Mat3::from_mat4`); same as
+    /// `Matrix3::from(m)`.
+    ///
+    /// ```
+    /// use rigtform::{Matrix3, Matrix4};
+    /// assert_eq!(Matrix3::from_mat4(Matrix4::IDENTITY), Matrix3::IDENTITY);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn from_mat4(m: Matrix4) -> Self {
+        Self::from(m)
+    }
+
     /// The column `i` (0, 1 or 2); [`Cvec3::NAN`] for any other index
     /// (glam's `Mat3::col` panics there; this never does).
     ///
@@ -455,6 +468,8 @@ mod tests {
             let m4 = Matrix4::from_cols_array(&core::array::from_fn(|_| rng.random()));
             let g4 = glam::Mat4::from_cols_array(&m4.to_cols_array());
             assert_eq!(to_glam(Matrix3::from(m4)), glam::Mat3::from_mat4(g4));
+            assert_eq!(Matrix3::from_mat4(m4), Matrix3::from(m4));
+            assert_eq!(Matrix4::from_mat3(a), Matrix4::from(a));
             let back = Matrix4::from(a).to_cols_array();
             assert_eq!(back, glam::Mat4::from_mat3(to_glam(a)).to_cols_array());
             assert_eq!(Matrix3::from(<[f32; 9]>::from(a)), a);

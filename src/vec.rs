@@ -245,6 +245,20 @@ impl Cvec3 {
         self.x.is_finite() && self.y.is_finite() && self.z.is_finite()
     }
 
+    /// The homogeneous 4-vector `[x, y, z, w]` (glam's `Vec3::extend`):
+    /// `w = 1` for a point ([`Cvec4::from_point`]), `w = 0` for a vector
+    /// ([`Cvec4::from_vector`]).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Cvec4};
+    /// assert_eq!(Cvec3::X.extend(1.0), Cvec4::from_point(Cvec3::X));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn extend(self, w: f32) -> Cvec4 {
+        Cvec4::new(self.x, self.y, self.z, w)
+    }
+
     /// The angle between `self` and `other`, in radians, in [0, pi]:
     /// `atan2(|u x v|, u . v)` of the two directions `u`, `v` (glam's
     /// `Vec3::angle_between`, nalgebra's `Vector3::angle`), which stays
@@ -405,6 +419,21 @@ impl Cvec4 {
     #[must_use]
     pub const fn xyz(self) -> Cvec3 {
         Cvec3::new(self.x, self.y, self.z)
+    }
+
+    /// glam's `Vec4::truncate`: the first three coordinates, which the
+    /// crate (and glam's swizzle) calls [`xyz`](Self::xyz).
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Cvec3, Cvec4};
+    /// assert_eq!(Cvec4::new(1.0, 2.0, 3.0, 4.0).truncate(), Cvec3::new(1.0, 2.0, 3.0));
+    /// ```
+    #[deprecated(note = "use `Cvec4::xyz`")]
+    #[inline]
+    #[must_use]
+    pub const fn truncate(self) -> Cvec3 {
+        self.xyz()
     }
 
     /// The coordinates as an array `[x, y, z, w]`.
@@ -876,6 +905,51 @@ macro_rules! everyday {
             pub fn is_nan(self) -> bool {
                 self.$first.is_nan() $(|| self.$rest.is_nan())*
             }
+
+            /// Each component clamped to `[lo, hi]` (of the same component):
+            /// `self.max(lo).min(hi)`, so a NaN in any operand gives NaN in
+            /// that component, and where `lo > hi` the result is `hi`
+            /// (glam asserts `lo <= hi`; this never panics).
+            ///
+            /// ```
+            #[doc = concat!("use rigtform::", stringify!($t), ";")]
+            #[doc = concat!("let v = ", stringify!($t), "::splat(5.0);")]
+            #[doc = concat!("assert_eq!(v.clamp(", stringify!($t), "::ZERO, ", stringify!($t), "::ONE), ", stringify!($t), "::ONE);")]
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn clamp(self, lo: Self, hi: Self) -> Self {
+                self.max(lo).min(hi)
+            }
+
+            /// nalgebra's name for the crate's [`norm`](Self::norm) (glam's
+            /// [`length`](Self::length)).
+            ///
+            /// ```
+            /// # #![allow(deprecated)]
+            #[doc = concat!("use rigtform::", stringify!($t), ";")]
+            #[doc = concat!("assert_eq!(", stringify!($t), "::ONE.magnitude(), ", stringify!($t), "::ONE.norm());")]
+            /// ```
+            #[deprecated(note = "use `norm` (the notes' name) or `length` (glam's)")]
+            #[inline]
+            #[must_use]
+            pub fn magnitude(self) -> f32 {
+                self.norm()
+            }
+
+            /// nalgebra's name for the crate's [`norm_squared`](Self::norm_squared).
+            ///
+            /// ```
+            /// # #![allow(deprecated)]
+            #[doc = concat!("use rigtform::", stringify!($t), ";")]
+            #[doc = concat!("assert_eq!(", stringify!($t), "::ONE.magnitude_squared(), ", stringify!($t), "::ONE.norm_squared());")]
+            /// ```
+            #[deprecated(note = "use `norm_squared` (the notes' name) or `length_squared` (glam's)")]
+            #[inline]
+            #[must_use]
+            pub fn magnitude_squared(self) -> f32 {
+                self.norm_squared()
+            }
         }
 
         impl Mul for $t {
@@ -1279,5 +1353,24 @@ mod tests {
         );
         assert_eq!(Cvec3::new(0.0, 1e-40, 0.0).normalize_or_zero(), Cvec3::Y);
         assert_eq!(2.0 * Cvec3::ONE, Cvec3::splat(2.0));
+        let v = Cvec3::new(-2.0, 0.5, 9.0);
+        let g = g3(v).clamp(glam::Vec3::ZERO, glam::Vec3::ONE);
+        assert_eq!(g3(v.clamp(Cvec3::ZERO, Cvec3::ONE)), g);
+        assert!(n.clamp(Cvec3::ZERO, Cvec3::ONE).x.is_nan());
+        assert_eq!(Cvec3::ONE.clamp(Cvec3::ONE, Cvec3::ZERO), Cvec3::ZERO);
+        assert_eq!(
+            Cvec4::from_array(g3(v).extend(2.0).to_array()),
+            v.extend(2.0)
+        );
+        #[allow(deprecated)]
+        {
+            assert_eq!(v.extend(1.0).truncate(), v);
+            assert_eq!(
+                (v.magnitude(), v.magnitude_squared()),
+                (v.norm(), v.norm_squared())
+            );
+            let w = Cvec4::new(1.0, 2.0, 2.0, 4.0);
+            assert_eq!((w.magnitude(), w.magnitude_squared()), (5.0, 25.0));
+        }
     }
 }

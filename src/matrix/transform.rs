@@ -10,6 +10,19 @@ use crate::rigtform::RigTForm;
 use crate::vec::{Cvec3, Cvec4};
 
 impl Matrix4 {
+    /// The linear map `m` as an affine map with no translation (glam's
+    /// `Mat4::from_mat3`); same as `Matrix4::from(m)`.
+    ///
+    /// ```
+    /// use rigtform::{Matrix3, Matrix4};
+    /// assert_eq!(Matrix4::from_mat3(Matrix3::IDENTITY), Matrix4::IDENTITY);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn from_mat3(m: Matrix3) -> Self {
+        Self::from(m)
+    }
+
     /// The affine map `T R`: rotate by `rotation`, then translate by
     /// `translation` (glam's `Mat4::from_rotation_translation`). Same as
     /// `Matrix4::from(RigTForm::new(translation, rotation))`.
