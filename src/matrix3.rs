@@ -476,6 +476,18 @@ mod tests {
         }
         assert!(Matrix3::IDENTITY.col(3).is_nan() && Matrix3::IDENTITY.row(usize::MAX).is_nan());
         assert_eq!(Matrix3::default(), Matrix3::IDENTITY);
+        assert_eq!(to_glam(Matrix3::IDENTITY), glam::Mat3::IDENTITY);
+        assert_eq!(to_glam(Matrix3::ZERO), glam::Mat3::ZERO);
+        assert_eq!(
+            std::format!(
+                "{}",
+                Matrix3::from_cols_array(&core::array::from_fn(|i| i as f32 * 0.5))
+            ),
+            std::format!(
+                "{}",
+                glam::Mat3::from_cols_array(&core::array::from_fn(|i| i as f32 * 0.5))
+            )
+        );
         let mut m = Matrix3::IDENTITY;
         m *= Matrix3::from_cols(Cvec3::X * 2.0, Cvec3::Y, Cvec3::Z);
         assert_eq!(m.determinant(), 2.0);

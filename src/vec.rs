@@ -1335,7 +1335,7 @@ mod tests {
     }
 
     #[test]
-    fn sums_sort_of_iterators_and_nan_propagates() {
+    fn sums_clamp_and_nan_in_agree_with_glam_or_give_nan() {
         let vs = [Cvec3::X, Cvec3::Y * 2.0, Cvec3::Z * 3.0];
         assert_eq!(vs.iter().sum::<Cvec3>(), Cvec3::new(1.0, 2.0, 3.0));
         assert_eq!(vs.into_iter().sum::<Cvec3>(), Cvec3::new(1.0, 2.0, 3.0));
@@ -1344,6 +1344,13 @@ mod tests {
         assert_eq!(g3(vs.iter().sum()), g);
         let n = Cvec3::new(f32::NAN, 1.0, 2.0);
         assert!(n.is_nan() && !Cvec3::ONE.is_nan());
+        for v in [n, Cvec3::ONE, Cvec3::new(1.0, 2.0, f32::NAN), Cvec3::ZERO] {
+            assert_eq!(v.is_nan(), g3(v).is_nan());
+            assert_eq!(
+                g3(v.normalize_or(Cvec3::Z)),
+                g3(v).normalize_or(glam::Vec3::Z)
+            );
+        }
         assert!(n.min(Cvec3::ONE).x.is_nan() && Cvec3::ONE.max(n).x.is_nan());
         assert!(n.min_element().is_nan() && n.max_element().is_nan());
         assert_eq!(n.normalize_or(Cvec3::X), Cvec3::X);
