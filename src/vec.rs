@@ -421,6 +421,73 @@ impl Cvec4 {
         Cvec3::new(self.x, self.y, self.z)
     }
 
+    /// The point of homogeneous coordinates `self`: `[x, y, z] / w`, the
+    /// perspective divide (glam's `Vec4::project`).
+    ///
+    /// # Preconditions
+    ///
+    /// None. `w = 0` (a direction, not a point) gives infinite or NaN
+    /// coordinates, never a panic.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Cvec4};
+    /// assert_eq!(Cvec4::new(2.0, 4.0, 6.0, 2.0).project(), Cvec3::new(1.0, 2.0, 3.0));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn project(self) -> Cvec3 {
+        self.xyz() / self.w
+    }
+
+    /// The vector projection of `self` onto the line of `rhs`, all four
+    /// coordinates (glam's `Vec4::project_onto`); see
+    /// [`Cvec3::project_onto`].
+    ///
+    /// # Preconditions
+    ///
+    /// `rhs` finite and non-zero, `self` finite; otherwise [`Cvec4::NAN`].
+    ///
+    /// # Accuracy
+    ///
+    /// Within [`accuracy::PROJECT_MAX_REL_ERROR`](crate::accuracy::PROJECT_MAX_REL_ERROR)
+    /// times `|self|` of the exact projection of the f32 inputs.
+    ///
+    /// ```
+    /// use rigtform::Cvec4;
+    /// let v = Cvec4::new(2.0, 3.0, 4.0, 5.0);
+    /// assert_eq!(v.project_onto(Cvec4::W * 10.0), Cvec4::W * 5.0);
+    /// ```
+    #[must_use]
+    pub fn project_onto(self, rhs: Self) -> Self {
+        match rhs.try_normalize() {
+            Some(u) => u * self.dot(u),
+            None => Self::NAN,
+        }
+    }
+
+    /// The part of `self` perpendicular to `rhs` (glam's
+    /// `Vec4::reject_from`): `self` minus its
+    /// [`project_onto`](Self::project_onto) `rhs`.
+    ///
+    /// # Preconditions
+    ///
+    /// As [`project_onto`](Self::project_onto).
+    ///
+    /// # Accuracy
+    ///
+    /// Within [`accuracy::PROJECT_MAX_REL_ERROR`](crate::accuracy::PROJECT_MAX_REL_ERROR)
+    /// times `|self|` of the exact rejection.
+    ///
+    /// ```
+    /// use rigtform::Cvec4;
+    /// let v = Cvec4::new(2.0, 3.0, 4.0, 5.0);
+    /// assert_eq!(v.reject_from(Cvec4::W), Cvec4::new(2.0, 3.0, 4.0, 0.0));
+    /// ```
+    #[must_use]
+    pub fn reject_from(self, rhs: Self) -> Self {
+        self - self.project_onto(rhs)
+    }
+
     /// glam's `Vec4::truncate`: the first three coordinates, which the
     /// crate (and glam's swizzle) calls [`xyz`](Self::xyz).
     ///
@@ -1332,6 +1399,45 @@ mod tests {
         std::println!("project_onto {worst_p:.3e}, reject_from {worst_r:.3e} (relative to |self|) over {} draws", draws());
         assert!(Cvec3::X.project_onto(Cvec3::ZERO).is_nan());
         assert!(Cvec3::X.reject_from(Cvec3::NAN).is_nan());
+    }
+
+    #[test]
+    fn cvec4_project_onto_reject_from_and_project_agree_with_nalgebra_and_glam() {
+        use crate::accuracy::PROJECT_MAX_REL_ERROR;
+        use rand::SeedableRng;
+        let mut rng = rand::rngs::StdRng::seed_from_u64(33);
+        let n4 = |v: Cvec4| nalgebra::Vector4::from(v.to_array().map(f64::from));
+        let g4 = |v: Cvec4| glam::Vec4::from_array(v.to_array());
+        let mut worst = 0f64;
+        for _ in 0..draws() {
+            let (a3, b3) = (draw(&mut rng), draw(&mut rng));
+            let a = a3.extend(a3.y * 0.5 - a3.x);
+            let b = b3.extend(b3.z * 2.0 + b3.x);
+            let (na, nb) = (n4(a), n4(b));
+            let p64 = nb * (na.dot(&nb) / nb.dot(&nb));
+            let size = na.norm();
+            let ep = (n4(a.project_onto(b)) - p64).norm() / size;
+            let er = (n4(a.reject_from(b)) - (na - p64)).norm() / size;
+            worst = worst.max(ep).max(er);
+            assert!(
+                ep.max(er) <= f64::from(PROJECT_MAX_REL_ERROR),
+                "{a:?} {b:?}: {ep:e} {er:e}"
+            );
+            if a.norm_squared().is_normal() && b.norm_squared().is_normal() {
+                let scale = a.norm();
+                assert!(
+                    (g4(a.project_onto(b)) - g4(a).project_onto(g4(b))).length() < 1e-6 * scale
+                );
+                assert!((g4(a.reject_from(b)) - g4(a).reject_from(g4(b))).length() < 1e-6 * scale);
+                assert_eq!(g3(a.project()), g4(a).project());
+            }
+        }
+        std::println!(
+            "Cvec4 project_onto / reject_from: {worst:.3e} (relative to |self|) over {} draws",
+            draws()
+        );
+        assert!(Cvec4::X.project_onto(Cvec4::ZERO).is_nan());
+        assert!(!Cvec4::X.project().is_finite());
     }
 
     #[test]
