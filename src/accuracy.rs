@@ -44,6 +44,13 @@
 //! | [`SAMPLER_LINEAR_MAX_ANGLE_ERROR`] | 5.6e-7 |
 //! | [`SAMPLER_CUBIC_MAX_ANGLE_ERROR`] | 1.0e-6 |
 //! | [`SAMPLER_VEC3_MAX_REL_ERROR`] | 7.2e-7 |
+//! | [`ANGLE_BETWEEN_MAX_ERROR`] | 4.2e-7 |
+//! | [`PROJECT_MAX_REL_ERROR`] | 4.5e-7 |
+//! | [`MATRIX3_INVERSE_MAX_REL_ERROR`] | 2.5e-7 |
+//! | [`MATRIX3_DETERMINANT_MAX_REL_ERROR`] | 2.5e-7 |
+//! | [`LOOK_AT_RH_MAX_TRANSLATION_ERROR`] | 1.1e-6 |
+//! | [`SRT_ROTATION_MAX_ANGLE_ERROR`] | 9.0e-7 |
+//! | [`SRT_SCALE_MAX_REL_ERROR`] | 9.5e-7 |
 
 /// The bounds that depend on the f32 kernels of `src/float/`: measured
 /// maxima over 10^7 draws in the comments, rounded up by about 25 %.
@@ -60,9 +67,10 @@ mod backend {
     pub const INTEGRATE_STEP_MAX_ANGLE_ERROR: f32 = 4.0e-7; // 3.206e-7
     pub const SMOOTHER_DECAY_MAX_ERROR: f32 = 1.0e-5; // 7.480e-6 (100 Hz and 1 kHz, 2 s)
     pub const IS_NORMALIZED_TOLERANCE: f32 = 1.0e-4;
-    pub const EULER_MAX_ANGLE_ERROR: f32 = 8.4e-7; // 6.678e-7 (to_euler), 3.438e-7 (from_euler)
+    pub const EULER_MAX_ANGLE_ERROR: f32 = 8.4e-7; // 6.794e-7 (to_euler), 3.314e-7 (from_euler), 24 orders
     pub const CATMULL_ROM_MAX_ANGLE_ERROR: f32 = 4.8e-7; // 3.849e-7 (5 keys, t over all of them)
     pub const SAMPLER_LINEAR_MAX_ANGLE_ERROR: f32 = 5.6e-7; // 4.432e-7 (4,000,000 samples)
+    pub const ANGLE_BETWEEN_MAX_ERROR: f32 = 4.2e-7; // 3.333e-7
 }
 
 /// Relative error of the square root kernel (`src/float/sqrt.rs`, `sweep_sqrt`).
@@ -164,7 +172,7 @@ pub const POW_MAX_ANGLE_ERROR: f32 = backend::POW_MAX_ANGLE_ERROR;
 /// Angle error of [`Quat::from_euler`](crate::Quat::from_euler) for angles
 /// in [-pi, pi], and of the rotation (evaluated exactly) of the angles that
 /// [`Quat::to_euler`](crate::Quat::to_euler) returns for a unit quaternion,
-/// every order, gimbal lock included. `from_euler`'s result is also within
+/// every one of the 24 orders, gimbal lock included. `from_euler`'s result is also within
 /// this much of unit norm (2.029e-7 measured).
 pub const EULER_MAX_ANGLE_ERROR: f32 = backend::EULER_MAX_ANGLE_ERROR;
 /// Angle error of `Quat::from_scaled_axis(v)`, relative to the angle `|v|`:
@@ -242,9 +250,42 @@ pub const SAMPLER_VEC3_MAX_REL_ERROR: f32 = 7.2e-7; // 5.774e-7 (4,000,000 sampl
 /// norm), per unit of the matrix's condition number `|M| |M^-1|`: measured on
 /// random 4x4 matrices with entries in [-1, 1] and condition below 1e4.
 pub const INVERSE_MAX_REL_ERROR: f32 = 5.5e-7; // 4.171e-7
+/// Error of the translation of [`Matrix4::look_at_rh`](crate::Matrix4::look_at_rh),
+/// relative to `|eye|`, against nalgebra's f64 `Matrix4::look_at_rh` of the
+/// same f32 points (eyes and targets in a cube of half-side 100, `up` at
+/// least 0.1 rad off the line of sight).
+pub const LOOK_AT_RH_MAX_TRANSLATION_ERROR: f32 = 1.1e-6; // 8.405e-7
+/// Angle error, in radians, of the rotation of
+/// [`Matrix4::to_scale_rotation_translation`](crate::Matrix4::to_scale_rotation_translation)
+/// for `Matrix4::from_scale_rotation_translation(s, r, t)` with random unit
+/// `r` and scales of magnitude 1e-3 to 1e3 (the x scale of either sign),
+/// against `r`.
+pub const SRT_ROTATION_MAX_ANGLE_ERROR: f32 = 9.0e-7; // 7.084e-7
+/// Error of the scale of the same, relative to each input scale.
+pub const SRT_SCALE_MAX_REL_ERROR: f32 = 9.5e-7; // 7.610e-7
+/// Error of [`Matrix3::inverse`](crate::Matrix3::inverse) relative to the
+/// inverse's size (Frobenius norm), per unit of the matrix's condition
+/// number: random 3x3 matrices with entries in [-1, 1] and condition below
+/// 1e4, against nalgebra's f64 inverse.
+pub const MATRIX3_INVERSE_MAX_REL_ERROR: f32 = 2.5e-7; // 1.984e-7
+/// Error of [`Matrix3::determinant`](crate::Matrix3::determinant) relative
+/// to the determinant and divided by the condition number, on the same
+/// draws, against nalgebra's f64 determinant.
+pub const MATRIX3_DETERMINANT_MAX_REL_ERROR: f32 = 2.5e-7; // 2.002e-7
 /// Largest entry difference between `Matrix4::from_quat(q)`, for unit `q`,
 /// and the exact rotation matrix of `q`.
 pub const MATRIX_ENTRY_ERROR: f32 = 3.8e-7; // 3.000e-7
+/// Angle error, in radians, of
+/// [`Cvec3::angle_between`](crate::Cvec3::angle_between) against the exact
+/// angle between the same f32 vectors (nalgebra in f64, `src/vec.rs`'s
+/// tests): random pairs, and pairs 1e-7 to 1e-1 rad from parallel and
+/// from opposite, at scales 2^-40 to 2^40.
+pub const ANGLE_BETWEEN_MAX_ERROR: f32 = backend::ANGLE_BETWEEN_MAX_ERROR;
+/// Error of [`Cvec3::project_onto`](crate::Cvec3::project_onto) and
+/// [`Cvec3::reject_from`](crate::Cvec3::reject_from) (and of `Cvec4`'s),
+/// relative to `|self|`, against the exact projection of the same f32
+/// vectors (nalgebra in f64), random pairs at scales 2^-40 to 2^40.
+pub const PROJECT_MAX_REL_ERROR: f32 = 4.5e-7; // 3.619e-7 (reject_from), 3.612e-7 (project_onto), 3.563e-7 (Cvec4)
 
 #[cfg(test)]
 mod tests {
@@ -302,7 +343,7 @@ mod tests {
                 super::CATMULL_ROM_MAX_ANGLE_ERROR,
             ),
         ];
-        // The samplers' bounds are quoted in this module's table only.
+        // Quoted in this module's table only (not in the README's).
         let module_only = [
             (
                 "SAMPLER_LINEAR_MAX_ANGLE_ERROR",
@@ -316,6 +357,25 @@ mod tests {
                 "SAMPLER_VEC3_MAX_REL_ERROR",
                 super::SAMPLER_VEC3_MAX_REL_ERROR,
             ),
+            ("ANGLE_BETWEEN_MAX_ERROR", super::ANGLE_BETWEEN_MAX_ERROR),
+            ("PROJECT_MAX_REL_ERROR", super::PROJECT_MAX_REL_ERROR),
+            (
+                "MATRIX3_INVERSE_MAX_REL_ERROR",
+                super::MATRIX3_INVERSE_MAX_REL_ERROR,
+            ),
+            (
+                "MATRIX3_DETERMINANT_MAX_REL_ERROR",
+                super::MATRIX3_DETERMINANT_MAX_REL_ERROR,
+            ),
+            (
+                "LOOK_AT_RH_MAX_TRANSLATION_ERROR",
+                super::LOOK_AT_RH_MAX_TRANSLATION_ERROR,
+            ),
+            (
+                "SRT_ROTATION_MAX_ANGLE_ERROR",
+                super::SRT_ROTATION_MAX_ANGLE_ERROR,
+            ),
+            ("SRT_SCALE_MAX_REL_ERROR", super::SRT_SCALE_MAX_REL_ERROR),
         ];
         let text = include_str!("accuracy.rs");
         for (name, value) in module_only {
@@ -330,7 +390,6 @@ mod tests {
                 "src/accuracy.rs: table row for {name}"
             );
         }
-        // Quoted in this module's table only (not yet in the README's).
         let tables = [
             ("src/accuracy.rs", include_str!("accuracy.rs"), "//! | [`"),
             ("README.md", include_str!("../README.md"), "| `"),

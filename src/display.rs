@@ -6,6 +6,7 @@
 use core::fmt::{self, Display, Formatter};
 
 use crate::matrix::Matrix4;
+use crate::matrix3::Matrix3;
 use crate::quat::{EulerRot, Quat};
 use crate::rigtform::RigTForm;
 use crate::vec::{Cvec3, Cvec4};
@@ -85,6 +86,19 @@ impl Display for Matrix4 {
     ///     m.to_string(),
     ///     "[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [7, 8, 9, 1]]"
     /// );
+    /// ```
+    fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
+        list(f, &self.cols)
+    }
+}
+
+impl Display for Matrix3 {
+    /// The three columns, `[[c0], [c1], [c2]]`, as glam prints its
+    /// matrices.
+    ///
+    /// ```
+    /// use rigtform::Matrix3;
+    /// assert_eq!(Matrix3::IDENTITY.to_string(), "[[1, 0, 0], [0, 1, 0], [0, 0, 1]]");
     /// ```
     fn fmt(&self, f: &mut Formatter<'_>) -> fmt::Result {
         list(f, &self.cols)

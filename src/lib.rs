@@ -219,6 +219,7 @@ mod display;
 mod features;
 mod float;
 mod matrix;
+mod matrix3;
 mod quat;
 mod rigtform;
 mod vec;
@@ -236,6 +237,7 @@ pub mod kani_kernels {
 }
 
 pub use matrix::Matrix4;
+pub use matrix3::Matrix3;
 pub use quat::{EulerRot, Quat};
 pub use rigtform::{NotRigid, RigTForm};
 pub use vec::{Cvec3, Cvec4};

@@ -4,6 +4,9 @@
 
 use core::ops::{Mul, MulAssign};
 
+mod camera;
+mod transform;
+
 use crate::float;
 use crate::quat::Quat;
 use crate::rigtform::RigTForm;

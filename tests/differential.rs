@@ -292,23 +292,26 @@ fn catmull_rom_is_within_its_bound() {
 
 #[test]
 fn euler_angles_are_within_their_bound_at_gimbal_lock_too() {
-    use core::f64::consts::{FRAC_PI_2, PI};
+    use core::f64::consts::PI;
     let mut draws = Draws::new(8);
     let mut from = Worst::new("Quat::from_euler: angle error");
     let mut norm = Worst::new("Quat::from_euler: |norm - 1|");
     let mut to = Worst::new("Quat::to_euler: angle error of the angles' rotation");
     for i in 0..draw_count() {
-        let order = EulerRot::ALL[i % 6];
+        let order = EulerRot::ALL[i % EulerRot::ALL.len()];
         let a = draws.uniform(-PI, PI) as f32;
         let c = draws.uniform(-PI, PI) as f32;
-        // One draw in four at or within a hair of gimbal lock.
-        let b = match i % 8 {
-            0 => FRAC_PI_2 as f32,
-            1 => -FRAC_PI_2 as f32,
-            2 | 3 => {
-                (FRAC_PI_2 * draws.uniform(-1.0, 1.0).signum() - draws.uniform(-1e-4, 1e-4)) as f32
-            }
-            _ => draws.uniform(-FRAC_PI_2, FRAC_PI_2) as f32,
+        // One draw in four at or within a hair of gimbal lock: the ends of
+        // the middle angle's range (+-pi/2 for Tait-Bryan orders, 0 and
+        // +-pi for proper Euler orders).
+        let (lo, hi) = order.middle_angle_range();
+        let (lo, hi) = (f64::from(lo), f64::from(hi));
+        let b = match (i / EulerRot::ALL.len()) % 8 {
+            0 => lo as f32,
+            1 => hi as f32,
+            2 => (lo + draws.uniform(0.0, 1e-4)) as f32,
+            3 => (hi - draws.uniform(0.0, 1e-4)) as f32,
+            _ => draws.uniform(lo, hi) as f32,
         };
         let got = Quat::from_euler(order, a, b, c);
         let want = testkit::euler64(order, a as f64, b as f64, c as f64);

@@ -666,9 +666,9 @@ fn matrix_inverse_is_none_or_finite() {
     });
 }
 
-/// Any of the six orders of Euler angles.
+/// Any of the 24 orders of Euler angles.
 fn any_euler_order() -> EulerRot {
-    let i = kani::any::<u32>() % 6;
+    let i = kani::any::<u32>() % EulerRot::ALL.len() as u32;
     EulerRot::ALL[i as usize]
 }
 

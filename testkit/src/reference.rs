@@ -74,28 +74,31 @@ pub fn slerp64(
 }
 
 /// The rotation of the Euler angles `(a, b, c)` in f64: the product of the
-/// three axis rotations of `order`, first axis first (intrinsic).
+/// three axis rotations of `order`, read from its name: `R_i(a) R_j(b) R_k(c)`
+/// for an intrinsic order `IJK`, `R_k(c) R_j(b) R_i(a)` for an extrinsic
+/// `IJKEx` (each about the fixed axes, first axis first).
 ///
 /// ```
 /// use rigtform::{EulerRot, Quat};
 /// use rigtform_testkit::{angle_error, euler64};
 /// let q = Quat::from_euler(EulerRot::ZYX, 0.1, 0.2, 0.3);
 /// assert!(angle_error(q, euler64(EulerRot::ZYX, 0.1, 0.2, 0.3)) < 1e-6);
+/// let q = Quat::from_euler(EulerRot::XYXEx, 0.1, 0.2, 0.3);
+/// assert!(angle_error(q, euler64(EulerRot::XYXEx, 0.1, 0.2, 0.3)) < 1e-6);
 /// ```
 pub fn euler64(order: EulerRot, a: f64, b: f64, c: f64) -> na::Quaternion<f64> {
-    let (x, y, z) = (
-        na::Vector3::x_axis(),
-        na::Vector3::y_axis(),
-        na::Vector3::z_axis(),
-    );
-    let axes = match order {
-        EulerRot::ZYX => [z, y, x],
-        EulerRot::ZXY => [z, x, y],
-        EulerRot::YXZ => [y, x, z],
-        EulerRot::YZX => [y, z, x],
-        EulerRot::XYZ => [x, y, z],
-        EulerRot::XZY => [x, z, y],
+    let axis = |letter: u8| match letter {
+        b'X' => na::Vector3::x_axis(),
+        b'Y' => na::Vector3::y_axis(),
+        _ => na::Vector3::z_axis(),
     };
-    let r = |axis, angle| na::UnitQuaternion::from_axis_angle(&axis, angle);
-    (r(axes[0], a) * r(axes[1], b) * r(axes[2], c)).into_inner()
+    let name = format!("{order:?}");
+    let n = name.as_bytes();
+    let r = |letter, angle| na::UnitQuaternion::from_axis_angle(&axis(letter), angle);
+    let (ra, rb, rc) = (r(n[0], a), r(n[1], b), r(n[2], c));
+    if name.ends_with("Ex") {
+        (rc * rb * ra).into_inner()
+    } else {
+        (ra * rb * rc).into_inner()
+    }
 }

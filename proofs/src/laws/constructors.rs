@@ -33,17 +33,18 @@ fn half_angle_sin2_bound(theta: f64) -> f64 {
 
 /// `from_euler` of the angles that `to_euler` returns is the rotation it
 /// was given, and the angles are in their documented ranges: `a` and `c`
-/// in [-pi, pi], `b` in [-pi/2, pi/2]. The angle between the two rotations
+/// in [-pi, pi], `b` in the order's `middle_angle_range`. The angle between the two rotations
 /// stays within twice [`EULER_MAX_ANGLE_ERROR`] (one way and back) plus the
 /// input's distance from unit norm.
 ///
 /// Preconditions: `q` unit to [`ONE_STEP_NORM_TOL`].
 pub fn euler_angles_give_back_the_rotation(q: Quat, order: EulerRot) -> Verdict {
-    use core::f32::consts::{FRAC_PI_2, PI};
+    use core::f32::consts::PI;
     let (a, b, c) = q.to_euler(order);
+    let (lo, hi) = order.middle_angle_range();
     yes_or_no(
         "euler_angles_give_back_the_rotation (ranges)",
-        (-PI..=PI).contains(&a) && (-FRAC_PI_2..=FRAC_PI_2).contains(&b) && (-PI..=PI).contains(&c),
+        (-PI..=PI).contains(&a) && (lo..=hi).contains(&b) && (-PI..=PI).contains(&c),
     )?;
     let back = Quat::from_euler(order, a, b, c);
     within(
