@@ -25,20 +25,21 @@ impl RestDetector {
     /// A detector that starts its low-passes at the first sample.
     pub(super) const fn new() -> Self {
         Self {
-            // NaN: started by the first sample.
-            gyro: Cvec3::NAN,
-            acc: Cvec3::NAN,
+            // Zero (which no usable accelerometer sample is): started by
+            // the first sample. Finite, so that every serde format holds it.
+            gyro: Cvec3::ZERO,
+            acc: Cvec3::ZERO,
             time: 0.0,
         }
     }
 
-    /// Takes one sample (gyro `gyr`, accelerometer `acc`, both finite, `dt`
-    /// seconds after the previous one): still if the gyro is within
+    /// Takes one sample (gyro `gyr`, accelerometer `acc`, both finite, `acc`
+    /// not zero, `dt` seconds after the previous one): still if the gyro is within
     /// `rest_gyro` of its low-pass, the low-pass is below `max_bias`, and
     /// the accelerometer is within `rest_acc` of gravity of its own.
     #[inline]
     pub(super) fn update(&mut self, gyr: Cvec3, acc: Cvec3, dt: f32, p: &FilterParams) {
-        if !self.acc.is_finite() {
+        if self.acc == Cvec3::ZERO {
             self.gyro = gyr;
             self.acc = acc;
         }
@@ -51,14 +52,13 @@ impl RestDetector {
         *self = Self {
             gyro,
             acc: acc_lp,
-            time: if still { self.time + dt } else { 0.0 },
+            // Finite, so that JSON holds it.
+            time: if still {
+                (self.time + dt).min(f32::MAX)
+            } else {
+                0.0
+            },
         };
-    }
-
-    /// A sample without a usable accelerometer vector: no rest.
-    #[inline]
-    pub(super) fn interrupt(&mut self) {
-        self.time = 0.0;
     }
 
     /// `true` once the sensor has been still for `rest_time` seconds.
@@ -92,8 +92,6 @@ mod tests {
             rest.update(bias, gravity(), DT, &p);
         }
         assert!(rest.is_resting(&p));
-        rest.interrupt();
-        assert!(!rest.is_resting(&p));
     }
 
     #[test]
