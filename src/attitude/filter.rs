@@ -18,6 +18,15 @@ const MAG_REFERENCE_TAU: f32 = 60.0;
 /// `IMPULSE_PEAK * a * dt / tau_acc`, about `tau_acc / 4` seconds later.
 const IMPULSE_PEAK: f32 = 0.644_794;
 
+/// The largest specific force the filter takes, in units of `gravity`:
+/// 1000 g, beyond what any accelerometer of an IMU measures (MEMS parts
+/// reach 16 to 32 g, shock sensors 200 to 400 g). It bounds the
+/// accelerometer average and its rounding errors (1000 g times 2^-24 is
+/// 6e-5 g) whatever `dt` is; a sample's own bound (see
+/// [`plausible_specific_force`]) is smaller at every sample rate below
+/// 4 kHz.
+const MAX_SPECIFIC_FORCE: f32 = 1000.0;
+
 /// The fraction of `gyro_range` from which a reading counts as saturated.
 const SATURATION: f32 = 0.99;
 
@@ -236,10 +245,12 @@ pub struct OrientationFilter {
     mag_reference: Cvec3,
     /// Whether the inclination has been set from an accelerometer sample.
     initialized: bool,
-    /// Whether a field has passed the disturbance gate since the reference
-    /// was taken: until then the reference is one sample, and a field
-    /// outside the gate replaces it (it may have been a glitch).
-    mag_confirmed: bool,
+    /// Negative until a field has passed the disturbance gate (until then
+    /// the reference is one sample's, and a field outside the gate
+    /// replaces it and sets the heading: the first may have been a
+    /// glitch); then the seconds for which the gate has been shut since a
+    /// field last passed it.
+    mag_shut: f32,
     /// The variance of the bias estimate, (rad/s)^2.
     bias_variance: f32,
     /// Seconds since the first usable accelerometer sample or the last
@@ -281,7 +292,7 @@ impl OrientationFilter {
             rest: RestDetector::new(),
             mag_reference: Cvec3::ZERO,
             initialized: false,
-            mag_confirmed: false,
+            mag_shut: -1.0,
             bias_variance: params.max_bias * params.max_bias,
             settling: 0.0,
             axes_average: [Cvec3::X, Cvec3::Y],
@@ -493,6 +504,14 @@ impl OrientationFilter {
         // unusable readings was tried on BROAD trial 16: after 100 of them
         // in fast motion it doubled the 9D error, as the inclination then
         // follows each accelerated sample and the field fails its gate.)
+        // A bias beyond `max_bias` (left by parameters that were changed
+        // since) is clipped before it is subtracted.
+        let max_bias = self.params.max_bias;
+        // NaN fails the test too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(self.bias.norm_squared() <= max_bias * max_bias) {
+            self.set_bias(self.bias);
+        }
         let half_turn = core::f32::consts::PI * core::f32::consts::PI;
         let usable = |rate: Cvec3| ((rate - self.bias) * dt).norm_squared() <= half_turn;
         let ignored = !usable(gyr);
@@ -632,9 +651,19 @@ impl OrientationFilter {
             self.initialized = true;
         }
         let (average, rate) = butterworth_step(self.acc_average, self.acc_rate, inertial, factors);
+        let length = average.norm();
+        // An average beyond the largest specific force (left by parameters
+        // that were changed since) or NaN: the low-pass restarts here.
+        // NaN fails the test too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(length <= MAX_SPECIFIC_FORCE * p.gravity) {
+            self.acc_average = inertial;
+            self.acc_rate = Cvec3::ZERO;
+            return None;
+        }
         self.acc_average = average;
         self.acc_rate = rate;
-        if (average.norm() - p.gravity).abs() > p.acc_gate * p.gravity {
+        if (length - p.gravity).abs() > p.acc_gate * p.gravity {
             return None;
         }
         let up = (self.correction * average).try_normalize()?;
@@ -669,11 +698,18 @@ impl OrientationFilter {
         let distance = offset.norm();
         let inside = distance <= p.mag_gate * length;
         // No reference yet, or one sample's that the next field disputes:
-        // the field sets the heading and becomes the reference.
-        let first = length == 0.0 || !(inside || self.mag_confirmed);
+        // the field sets the heading at once and becomes the reference.
+        let confirmed = self.mag_shut >= 0.0;
+        let first = length == 0.0 || !(inside || confirmed);
         if first {
             self.mag_reference = seen;
-            self.mag_confirmed = false;
+        } else if !inside && self.mag_shut >= MAG_REFERENCE_TAU {
+            // The gate has been shut for MAG_REFERENCE_TAU: a new
+            // environment, or a burst of identical glitches that confirmed
+            // itself as the first fields. The field becomes the reference,
+            // and corrects the heading as any field that passes does.
+            self.mag_reference = seen;
+            self.mag_shut = 0.0;
         } else {
             // The reference follows the field, but no faster than it would
             // follow one its own length away: a single reading, however
@@ -688,9 +724,13 @@ impl OrientationFilter {
             let alpha = smoothing_factor(dt, MAG_REFERENCE_TAU);
             self.mag_reference = reference + offset * (alpha * pull);
             if !inside {
+                if confirmed {
+                    // Finite, so that JSON holds it.
+                    self.mag_shut = (self.mag_shut + dt).min(f32::MAX);
+                }
                 return None;
             }
-            self.mag_confirmed = true;
+            self.mag_shut = 0.0;
         }
         // The field's angle east of north; turning by it about +z brings
         // it to north.
@@ -742,9 +782,13 @@ impl OrientationFilter {
 /// this passes a few samples it could have caught, never the reverse of
 /// that by more than `2 gravity dt`.
 fn plausible_specific_force(acc: Cvec3, dt: f32, p: &FilterParams) -> Option<Cvec3> {
-    let length = acc.norm();
-    // NaN, infinite, zero, or so large that its length overflows.
-    if !(length.is_finite() && length > 0.0) {
+    // The square overflows to infinity or underflows to zero only far
+    // outside the bounds below.
+    let length = float::sqrt(acc.norm_squared());
+    // NaN, infinite, zero, or beyond the largest specific force.
+    // (An infinite length passes only an infinite gravity, and then fails
+    // the impulse test as NaN.)
+    if !(length > 0.0 && length <= MAX_SPECIFIC_FORCE * p.gravity) {
         return None;
     }
     let tau = p.tau_acc.max(0.0);

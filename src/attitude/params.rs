@@ -122,7 +122,7 @@ pub struct FilterParams {
     /// restarts the short time constants, and the filter then follows the
     /// accelerometer through linear accelerations (BROAD trial 16 read by
     /// a 350 °/s gyro, 1,011 samples at the range: 6D inclination RMSE
-    /// 54° with the range set, 3.5° without).
+    /// 50° with the range set, 3.5° without).
     pub gyro_range: f32,
 }
 

@@ -17,7 +17,8 @@ const REST_LOW_PASS_TAU: f32 = 0.5;
 pub(super) struct RestDetector {
     gyro: Cvec3,
     acc: Cvec3,
-    /// Seconds that both conditions have held.
+    /// Seconds that both conditions have held; negative before the first
+    /// sample.
     time: f32,
 }
 
@@ -25,11 +26,11 @@ impl RestDetector {
     /// A detector that starts its low-passes at the first sample.
     pub(super) const fn new() -> Self {
         Self {
-            // Zero (which no usable accelerometer sample is): started by
-            // the first sample. Finite, so that every serde format holds it.
+            // Started by the first sample (a negative time). Finite, so
+            // that every serde format holds it.
             gyro: Cvec3::ZERO,
             acc: Cvec3::ZERO,
-            time: 0.0,
+            time: -1.0,
         }
     }
 
@@ -39,13 +40,33 @@ impl RestDetector {
     /// the accelerometer is within `rest_acc` of gravity of its own.
     #[inline]
     pub(super) fn update(&mut self, gyr: Cvec3, acc: Cvec3, dt: f32, p: &FilterParams) {
-        if self.acc == Cvec3::ZERO {
-            self.gyro = gyr;
-            self.acc = acc;
+        // NaN fails the test too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(self.time >= 0.0) {
+            *self = Self {
+                gyro: gyr,
+                acc,
+                time: 0.0,
+            };
         }
         let alpha = smoothing_factor(dt, REST_LOW_PASS_TAU);
         let gyro = low_pass(self.gyro, gyr, alpha);
         let acc_lp = low_pass(self.acc, acc, alpha);
+        // Overflowed (the filter takes specific forces up to 1000 gravity,
+        // which only a `gravity` near f32::MAX makes overflow): the
+        // low-passes restart at this sample. The gyro's cannot: each step
+        // moves it by at most the fraction alpha of a turn of half a
+        // revolution per `dt`, 2 pi rad/s.
+        // NaN fails the test too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(acc_lp.norm_squared() <= f32::MAX) {
+            *self = Self {
+                gyro: gyr,
+                acc,
+                time: 0.0,
+            };
+            return;
+        }
         let still = (gyr - gyro).norm() <= p.rest_gyro
             && gyro.norm() <= p.max_bias
             && (acc - acc_lp).norm() <= p.rest_acc * p.gravity;
