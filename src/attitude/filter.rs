@@ -111,7 +111,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///
 /// # State and cost
 ///
-/// 252 bytes including the 56 of the parameters (`size_of`, checked by a
+/// 256 bytes including the 56 of the parameters (`size_of`, checked by a
 /// test and by `cargo xtask filter-cost` on the target), no allocation. A
 /// 6D update costs three quaternion products, three vector rotations, four
 /// normalizations, an atan2, the low-pass of the accelerometer and of two
@@ -123,8 +123,8 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
 /// LTO), counted by `cargo xtask filter-cost`, which fails above the
 /// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
-/// state: 1,537 (6D) and 2,010 (9D) with the default kernels, 1,547 and
-/// 1,990 with `fast-math`.
+/// state: 1,547 (6D) and 2,018 (9D) with the default kernels, 1,558 and
+/// 2,004 with `fast-math`.
 ///
 /// # Bad input
 ///
@@ -165,21 +165,27 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///   zeros: no direction), or so far from gravity that the sample alone
 ///   would take the average half-way out of `acc_gate` (a velocity change
 ///   of 2.3 m/s within one sample with the defaults: 66 g at 285 Hz, 23 g
-///   at 100 Hz; no carried sensor feels that but in an impact, and
-///   `3.4e38` or `1e30` are far beyond it): flagged (`acc_ignored`), the
-///   sample only propagates the gyro, and it neither counts as rest nor
-///   ends it. The correction is off for that sample alone. Below the
-///   bound a reading is a real specific force to the filter: one of 16 g
-///   on each axis moves the estimate by 1°, with no correction off.
+///   at 100 Hz; no carried sensor feels that but in an impact), or beyond
+///   1000 g whatever `dt` (`3.4e38` and `1e30` are far beyond both):
+///   flagged (`acc_ignored`), the sample only propagates the gyro, and it
+///   neither counts as rest nor ends it. The correction is off for that
+///   sample alone (for the 100 samples of a burst of 100, and not after
+///   it). Below the bound a reading is a real specific force to the
+///   filter: one of 16 g on each axis moves the estimate by 1°, with no
+///   correction off.
 /// - Magnetometer NaN, infinite, zero, without horizontal part, or outside
 ///   the disturbance gate (`1e30`, `1e6`, int16 full scale, a field
 ///   opposite to the reference): flagged (`mag_ignored`), no heading
 ///   correction for that sample, and the reference field moves towards it
 ///   by at most the fraction `1 - exp(-dt / 60 s)` of its own length (it
 ///   follows no faster than it would a field its own length away): the
-///   next usable field passes the gate again. The first field sets the
-///   reference; if the next one disagrees, it replaces it (the first may
-///   have been a glitch), until a field passes the gate.
+///   next usable field passes the gate again (after a burst of 100, five
+///   samples near the gate's edge fall on the other side in the rest of
+///   the trial). The first field sets the reference; if the next one
+///   disagrees, it replaces it (the first may have been a glitch), until a
+///   field passes the gate. A gate shut for 60 s (a new environment, or a
+///   burst of identical glitches that confirmed itself as the first
+///   fields) gives the reference to the current field.
 /// - Parameters: zero or negative time constants mean "immediate" (no
 ///   smoothing), infinite ones "never". While any parameter is NaN, every
 ///   update returns [`Quat::NAN`] and leaves the state unchanged.
