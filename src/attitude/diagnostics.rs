@@ -36,17 +36,24 @@ pub struct Diagnostics {
     /// passed as their time constant (the average of every sample so far)
     /// instead of `tau_acc` and `tau_mag`.
     pub initialising: bool,
-    /// The same short time constants after the gyro reached its range
-    /// (`FilterParams::gyro_range`): the integrated gyro is no longer to be
-    /// trusted, so the accelerometer and magnetometer take over quickly.
+    /// The same short time constants after the gyro stayed at its range
+    /// (`FilterParams::gyro_range`) for two samples or more: the integrated
+    /// gyro is no longer to be trusted, so the accelerometer and
+    /// magnetometer take over quickly.
     pub recovering: bool,
     /// The gyro reading of the last update reached `gyro_range` on some axis.
     pub gyro_saturated: bool,
+    /// The gyro reading of the last update was unusable (NaN, infinite, or
+    /// more than half a turn within the sample: a glitch): the filter
+    /// integrated the last usable reading instead, and the update returned
+    /// NaN.
+    pub gyro_ignored: bool,
     /// The rest detector sees the sensor at rest.
     pub resting: bool,
     /// The accelerometer made no inclination correction in the last update:
-    /// no usable vector (NaN, infinite or zero), or its average outside
-    /// `acc_gate` of gravity.
+    /// no usable vector (NaN, infinite, zero, or a specific force no carried
+    /// sensor feels within one sample; see the filter's "Bad input"), or
+    /// its average outside `acc_gate` of gravity.
     pub acc_ignored: bool,
     /// A magnetometer sample made no heading correction in the last update:
     /// no usable field, or outside the disturbance gate (`mag_gate`).

@@ -17,7 +17,8 @@ const REST_LOW_PASS_TAU: f32 = 0.5;
 pub(super) struct RestDetector {
     gyro: Cvec3,
     acc: Cvec3,
-    /// Seconds that both conditions have held.
+    /// Seconds that both conditions have held; negative before the first
+    /// sample.
     time: f32,
 }
 
@@ -25,40 +26,60 @@ impl RestDetector {
     /// A detector that starts its low-passes at the first sample.
     pub(super) const fn new() -> Self {
         Self {
-            // NaN: started by the first sample.
-            gyro: Cvec3::NAN,
-            acc: Cvec3::NAN,
-            time: 0.0,
+            // Started by the first sample (a negative time). Finite, so
+            // that every serde format holds it.
+            gyro: Cvec3::ZERO,
+            acc: Cvec3::ZERO,
+            time: -1.0,
         }
     }
 
-    /// Takes one sample (gyro `gyr`, accelerometer `acc`, both finite, `dt`
-    /// seconds after the previous one): still if the gyro is within
+    /// Takes one sample (gyro `gyr`, accelerometer `acc`, both finite, `acc`
+    /// not zero, `dt` seconds after the previous one): still if the gyro is within
     /// `rest_gyro` of its low-pass, the low-pass is below `max_bias`, and
     /// the accelerometer is within `rest_acc` of gravity of its own.
     #[inline]
     pub(super) fn update(&mut self, gyr: Cvec3, acc: Cvec3, dt: f32, p: &FilterParams) {
-        if !self.acc.is_finite() {
-            self.gyro = gyr;
-            self.acc = acc;
+        // NaN fails the test too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(self.time >= 0.0) {
+            *self = Self {
+                gyro: gyr,
+                acc,
+                time: 0.0,
+            };
         }
         let alpha = smoothing_factor(dt, REST_LOW_PASS_TAU);
         let gyro = low_pass(self.gyro, gyr, alpha);
         let acc_lp = low_pass(self.acc, acc, alpha);
+        // Overflowed (the filter takes specific forces up to 1000 gravity,
+        // which only a `gravity` near f32::MAX makes overflow): the
+        // low-passes restart at this sample. The gyro's cannot: each step
+        // moves it by at most the fraction alpha of a turn of half a
+        // revolution per `dt`, 2 pi rad/s.
+        // NaN fails the test too.
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        if !(acc_lp.norm_squared() <= f32::MAX) {
+            *self = Self {
+                gyro: gyr,
+                acc,
+                time: 0.0,
+            };
+            return;
+        }
         let still = (gyr - gyro).norm() <= p.rest_gyro
             && gyro.norm() <= p.max_bias
             && (acc - acc_lp).norm() <= p.rest_acc * p.gravity;
         *self = Self {
             gyro,
             acc: acc_lp,
-            time: if still { self.time + dt } else { 0.0 },
+            // Finite, so that JSON holds it.
+            time: if still {
+                (self.time + dt).min(f32::MAX)
+            } else {
+                0.0
+            },
         };
-    }
-
-    /// A sample without a usable accelerometer vector: no rest.
-    #[inline]
-    pub(super) fn interrupt(&mut self) {
-        self.time = 0.0;
     }
 
     /// `true` once the sensor has been still for `rest_time` seconds.
@@ -92,8 +113,6 @@ mod tests {
             rest.update(bias, gravity(), DT, &p);
         }
         assert!(rest.is_resting(&p));
-        rest.interrupt();
-        assert!(!rest.is_resting(&p));
     }
 
     #[test]

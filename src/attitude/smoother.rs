@@ -73,10 +73,16 @@ impl Smoother {
     /// - `dt <= 0`: nothing moves (no time passed; no extrapolation).
     /// - `tau <= 0`: the state becomes `measurement`'s rotation (no
     ///   smoothing); `tau = f32::INFINITY`: the state stays.
-    /// - A NaN or infinite `measurement`, or NaN `dt` or `tau`, returns
-    ///   [`Quat::NAN`] and leaves the state unchanged, so one bad sample
-    ///   does not poison the smoother. An infinite `dt` counts as a very
-    ///   long time: the state becomes `measurement`.
+    /// - A NaN, infinite or zero `measurement`, or NaN `dt` or `tau`,
+    ///   returns [`Quat::NAN`] and leaves the state unchanged, so one bad
+    ///   sample does not poison the smoother. An infinite `dt` counts as a
+    ///   very long time: the state becomes `measurement`.
+    /// - A finite `measurement` that is not unit is normalized first (also
+    ///   one whose squared norm overflows, such as `3e38` in every
+    ///   component), so the state stays a unit quaternion.
+    /// - A state that is no rotation (NaN, infinite or zero, written into
+    ///   the public field) is replaced by the measurement at the next
+    ///   update that has one; a finite non-unit state is normalized.
     ///
     /// # Accuracy
     ///
@@ -99,15 +105,34 @@ impl Smoother {
     /// assert_eq!(s.attitude, Quat::IDENTITY); // ... and ignored
     /// s.tau = 0.0;
     /// assert!(s.update(m, 0.01).angle_to(m) < 1e-6); // no smoothing
+    /// s.attitude = Quat::NAN; // a corrupted state ...
+    /// s.tau = 1.0;
+    /// assert!(s.update(m, 0.01).angle_to(m) < 1e-6); // ... is replaced
     /// ```
     pub fn update(&mut self, measurement: Quat, dt: f32) -> Quat {
         let alpha = smoothing_factor(dt, self.tau);
-        if alpha.is_nan() || !measurement.is_finite() {
+        let Some(measurement) = measurement.try_normalize() else {
+            return Quat::NAN;
+        };
+        if alpha.is_nan() {
             return Quat::NAN;
         }
-        if alpha != 0.0 {
-            self.attitude = self.attitude.slerp(measurement, alpha);
-        }
+        let state = self.attitude;
+        // A unit state (to rounding) is kept bit for bit; another is
+        // normalized, or replaced if it has no direction.
+        let state = if (state.norm_squared() - 1.0).abs() <= 4.0 * f32::EPSILON {
+            state
+        } else {
+            match state.try_normalize() {
+                Some(unit) => unit,
+                None => measurement,
+            }
+        };
+        self.attitude = if alpha != 0.0 {
+            state.slerp(measurement, alpha)
+        } else {
+            state
+        };
         self.attitude
     }
 }
@@ -204,6 +229,51 @@ mod tests {
         s.tau = 1.0;
         s.attitude = q;
         assert!(s.update(m, f32::INFINITY).angle_to(m) <= tol);
+    }
+
+    /// A finite measurement whose squared norm overflows, a zero one, and
+    /// a state that is no rotation: the state stays a unit quaternion.
+    #[test]
+    fn huge_zero_and_corrupted_values_keep_the_state_unit() {
+        let unit = |q: Quat| q.is_finite() && (q.norm() - 1.0).abs() < 1e-6;
+        let mut s = Smoother::new(Quat::IDENTITY, 0.5);
+        let huge = Quat {
+            w: 3e38,
+            x: 3e38,
+            y: 0.0,
+            z: 0.0,
+        };
+        let want = Quat::from_rotation_x(core::f32::consts::FRAC_PI_2);
+        for _ in 0..2000 {
+            assert!(unit(s.update(huge, 0.01)), "{:?}", s.attitude);
+        }
+        assert!(s.attitude.angle_to(want) < 1e-5, "{:?}", s.attitude);
+        let zero = Quat {
+            w: 0.0,
+            x: 0.0,
+            y: 0.0,
+            z: 0.0,
+        };
+        let infinite = Quat {
+            w: f32::INFINITY,
+            ..zero
+        };
+        let before = s.attitude;
+        assert!(!s.update(zero, 0.01).is_finite());
+        assert_eq!(s.attitude, before);
+        for bad in [Quat::NAN, zero, infinite] {
+            s.attitude = bad;
+            assert!(unit(s.update(want, 0.01)), "{bad:?}");
+            assert!(s.attitude.angle_to(want) < 1e-6, "{bad:?}");
+        }
+        // A state off the unit sphere but with a direction is normalized.
+        let turn = Quat::from_rotation_z(0.5);
+        s.attitude = Quat {
+            w: 4.0 * turn.w,
+            z: 4.0 * turn.z,
+            ..turn
+        };
+        assert!(unit(s.update(turn, 0.0)));
     }
 
     #[test]

@@ -65,7 +65,7 @@ fn tumble(t: f32) -> Cvec3 {
 
 #[test]
 fn state_size_is_as_documented() {
-    assert_eq!(core::mem::size_of::<OrientationFilter>(), 240);
+    assert_eq!(core::mem::size_of::<OrientationFilter>(), 256);
     assert_eq!(core::mem::size_of::<FilterParams>(), 56);
 }
 
@@ -419,29 +419,59 @@ fn bad_input_is_reported_and_ignored() {
         f.update(gyr, acc, 0.01);
     }
     let before = f;
-    // Compared as text: the unset magnetic reference is NaN.
-    let unchanged = |f: &OrientationFilter| std::format!("{f:?}") == std::format!("{before:?}");
-    for (g, d) in [
-        (Cvec3::NAN, 0.01),
-        (Cvec3::new(f32::INFINITY, 0.0, 0.0), 0.01),
-        (gyr, f32::NAN),
-        (gyr, f32::INFINITY),
+    // An unusable gyro reading: reported (NaN out, flagged), and the last
+    // usable reading integrated in its place, with the accelerometer used.
+    for g in [
+        Cvec3::NAN,
+        Cvec3::new(f32::INFINITY, 0.0, 0.0),
+        Cvec3::new(1e30, 0.0, -1e30),
+        Cvec3::new(f32::MAX, f32::MAX, f32::MAX),
+        // More than half a turn in 0.01 s.
+        Cvec3::new(0.0, 320.0, 0.0),
     ] {
-        assert!(!f.update(g, acc, d).is_finite());
-        assert!(unchanged(&f));
+        let mut held = before;
+        assert!(!f.update(g, acc, 0.01).is_finite(), "{g:?}");
+        assert!(f.diagnostics().gyro_ignored && !f.diagnostics().acc_ignored);
+        held.update(gyr, acc, 0.01);
+        assert_eq!(f.attitude(), held.attitude(), "{g:?}");
+        f = before;
     }
+    // A NaN, infinite or huge dt: no turn can be integrated over it, the
+    // sample is skipped; only the flag changes.
+    for d in [f32::NAN, f32::INFINITY, 1e30, 3600.0] {
+        assert!(!f.update(gyr, acc, d).is_finite(), "{d}");
+        assert!(f.diagnostics().gyro_ignored);
+        let mut g = f;
+        g.diagnostics = before.diagnostics;
+        assert_eq!(g, before, "{d}");
+    }
+    f = before;
     assert_eq!(f.update(gyr, acc, 0.0), before.attitude());
     assert_eq!(f.update(gyr, acc, -1.0), before.attitude());
-    assert!(unchanged(&f));
-    // No accelerometer information: the gyro alone.
-    for bad in [Cvec3::NAN, Cvec3::ZERO, Cvec3::new(f32::INFINITY, 0.0, 0.0)] {
+    assert_eq!(f, before);
+    // No accelerometer information, or a specific force no carried sensor
+    // feels (a velocity change of 10 m/s in 0.01 s): the gyro alone.
+    for bad in [
+        Cvec3::NAN,
+        Cvec3::ZERO,
+        Cvec3::new(f32::INFINITY, 0.0, 0.0),
+        Cvec3::new(3.4e38, -3.4e38, 3.4e38),
+        Cvec3::new(1e30, 0.0, 0.0),
+        Cvec3::new(0.0, 0.0, 1000.0),
+    ] {
         let mut g = before;
         let q = g.update(gyr, bad, 0.01);
         let want = before.attitude().integrate(gyr, 0.01);
         assert!(q.angle_to(want) < 1e-5, "{bad:?}");
+        assert!(g.diagnostics().acc_ignored, "{bad:?}");
     }
     // No usable field: no heading correction.
-    for bad in [Cvec3::NAN, Cvec3::ZERO, Cvec3::new(0.0, 0.0, -40.0)] {
+    for bad in [
+        Cvec3::NAN,
+        Cvec3::ZERO,
+        Cvec3::new(0.0, 0.0, -40.0),
+        Cvec3::new(3.4e38, -3.4e38, 3.4e38),
+    ] {
         let mut a = before;
         let mut b = before;
         assert_eq!(
@@ -617,4 +647,132 @@ fn horizontal_axes_are_the_first_two_rows_of_the_rotation_matrix() {
             );
         }
     }
+}
+
+/// A level, still filter that has seen `FIELD` for 5 s at 100 Hz.
+fn settled_on_the_field() -> OrientationFilter {
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    for _ in 0..500 {
+        f.update_with_mag(Cvec3::ZERO, Cvec3::new(0.0, 0.0, G), FIELD, 0.01);
+    }
+    assert!(!f.diagnostics().mag_ignored && f.mag_shut == 0.0);
+    f
+}
+
+#[test]
+fn a_rejected_field_barely_moves_the_reference() {
+    let level = Cvec3::new(0.0, 0.0, G);
+    let alpha = smoothing_factor(0.01, MAG_REFERENCE_TAU);
+    for glitch in [
+        Cvec3::new(1e30, -1e30, 1e30),
+        Cvec3::new(3.4e38, 3.4e38, -3.4e38),
+        Cvec3::new(1e6, 1e6, 1e6),
+        Cvec3::new(32767.0, -32768.0, 32767.0),
+        -FIELD,
+        FIELD * 2.0,
+    ] {
+        let mut f = settled_on_the_field();
+        let reference = f.mag_reference;
+        f.update_with_mag(Cvec3::ZERO, level, glitch, 0.01);
+        assert!(f.diagnostics().mag_ignored, "{glitch:?}");
+        // At most the fraction alpha of the reference's length.
+        let moved = (f.mag_reference - reference).norm();
+        assert!(
+            moved <= alpha * reference.norm() * 1.001,
+            "{glitch:?}: {moved}"
+        );
+        // The next field passes the gate again, and the heading holds.
+        let turned = Quat::from_rotation_z(0.05).inv() * FIELD;
+        f.update_with_mag(Cvec3::ZERO, level, turned, 0.01);
+        let d = f.diagnostics();
+        assert!(
+            !d.mag_ignored && (d.mag_error - 0.05).abs() < 1e-3,
+            "{glitch:?} {d:?}"
+        );
+    }
+}
+
+#[test]
+fn a_glitch_as_the_first_field_is_replaced_by_the_next() {
+    let level = Cvec3::new(0.0, 0.0, G);
+    let truth = Quat::from_rotation_z(0.8);
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    f.update_with_mag(Cvec3::ZERO, level, Cvec3::new(1e30, 0.0, -1e30), 0.01);
+    assert!(f.mag_shut < 0.0);
+    // Replaced by the next field, then confirmed by the one after; the
+    // heading converges as at start-up (the time passed is the time
+    // constant).
+    let mut q = Quat::NAN;
+    for i in 0..100 {
+        q = f.update_with_mag(Cvec3::ZERO, level, truth.inv() * FIELD, 0.01);
+        assert!(!f.diagnostics().mag_ignored, "{i}");
+    }
+    assert!(f.mag_shut == 0.0);
+    assert!(q.angle_to(truth) < 1e-3, "{q:?}");
+}
+
+/// A burst of identical glitches as the first fields confirms itself as
+/// the reference; the true field then fails the gate for a minute, and
+/// replaces it.
+#[test]
+fn a_burst_of_glitches_as_the_first_fields_is_replaced_after_a_minute() {
+    let level = Cvec3::new(0.0, 0.0, G);
+    let truth = Quat::from_rotation_z(-1.3);
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    for _ in 0..20 {
+        f.update_with_mag(
+            Cvec3::ZERO,
+            level,
+            Cvec3::new(32767.0, 32767.0, 32767.0),
+            0.01,
+        );
+    }
+    let mut shut = 0;
+    let mut q = Quat::NAN;
+    for _ in 0..12_000 {
+        q = f.update_with_mag(Cvec3::ZERO, level, truth.inv() * FIELD, 0.01);
+        shut += usize::from(f.diagnostics().mag_ignored);
+    }
+    std::println!("gate shut for {} s", shut as f32 * 0.01);
+    assert!(
+        (shut as f32 * 0.01 - MAG_REFERENCE_TAU).abs() < 0.02,
+        "{shut}"
+    );
+    // The heading then converges over tau_mag (60 s of 10 s: exp(-6)).
+    assert!(q.angle_to(truth) < 0.01, "{q:?}");
+}
+
+/// A new environment whose field is 30 % stronger, or twice as strong, is
+/// accepted in the end: the time until the gate opens.
+#[test]
+fn a_new_environment_is_accepted_in_the_end() {
+    let level = Cvec3::new(0.0, 0.0, G);
+    for (scale, most) in [(1.3, 70.0), (2.0, 120.0)] {
+        let mut f = settled_on_the_field();
+        let mut seconds = None;
+        for i in 0..(most * 100.0) as u32 {
+            f.update_with_mag(Cvec3::ZERO, level, FIELD * scale, 0.01);
+            if !f.diagnostics().mag_ignored {
+                seconds = Some(i as f32 * 0.01);
+                break;
+            }
+        }
+        std::println!("field x{scale}: accepted after {seconds:?} s");
+        assert!(seconds.is_some_and(|s| s > 30.0), "{scale}: {seconds:?}");
+    }
+}
+
+#[test]
+fn a_field_opposite_to_the_reference_is_kept_out() {
+    let mut f = settled_on_the_field();
+    let before = f.attitude();
+    let q = f.update_with_mag(Cvec3::ZERO, Cvec3::new(0.0, 0.0, G), -FIELD, 0.01);
+    assert!(f.diagnostics().mag_ignored);
+    assert!(q.angle_to(before) < 1e-6);
+    // With the gate open, it is a heading half a turn away, taken as such
+    // (finite and unit).
+    let mut open = settled_on_the_field();
+    open.params.mag_gate = f32::INFINITY;
+    let q = open.update_with_mag(Cvec3::ZERO, Cvec3::new(0.0, 0.0, G), -FIELD, 0.01);
+    assert!(q.is_finite() && (q.norm() - 1.0).abs() < 1e-6, "{q:?}");
 }
