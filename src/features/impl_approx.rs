@@ -20,7 +20,7 @@
 //! assert!(q.angle_to(-q) < 1e-6); // ...but the rotation is the same
 //! ```
 
-use crate::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+use crate::{Cvec3, Cvec4, Matrix3, Matrix4, Quat, RigTForm};
 use approx::{AbsDiffEq, RelativeEq, UlpsEq};
 
 /// The components of each type, in field order, as `approx` compares them.
@@ -57,6 +57,13 @@ impl Components for RigTForm {
     fn components(&self) -> [f32; 7] {
         let ([x, y, z], [i, j, k, w]) = (self.t.to_array(), self.r.to_array());
         [x, y, z, i, j, k, w]
+    }
+}
+
+impl Components for Matrix3 {
+    type Array = [f32; 9];
+    fn components(&self) -> [f32; 9] {
+        self.to_cols_array()
     }
 }
 
@@ -109,7 +116,7 @@ macro_rules! impl_approx {
     )*};
 }
 
-impl_approx!(Cvec3, Cvec4, Quat, RigTForm, Matrix4);
+impl_approx!(Cvec3, Cvec4, Quat, RigTForm, Matrix3, Matrix4);
 
 #[cfg(test)]
 mod tests {
@@ -167,6 +174,10 @@ mod tests {
                     Quat::from_xyzw(a[3], a[4], a[5], a[6]),
                 )
             },
+        );
+        every_component_counts(
+            Matrix3::from_cols_array(&core::array::from_fn(|i| 1.0 + i as f32)),
+            |a| Matrix3::from_cols_array(&core::array::from_fn(|i| a[i])),
         );
         every_component_counts(
             Matrix4::from_cols_array(&core::array::from_fn(|i| 1.0 + i as f32)),

@@ -1,5 +1,5 @@
 //! `bytemuck::Pod` and `bytemuck::Zeroable` (feature `bytemuck`) for
-//! [`Cvec3`], [`Cvec4`], [`Quat`], [`RigTForm`], [`Matrix4`],
+//! [`Cvec3`], [`Cvec4`], [`Quat`], [`RigTForm`], [`Matrix3`], [`Matrix4`],
 //! [`Smoother`], [`FilterParams`], [`InertialCalibration`] and
 //! [`MagneticCalibration`]: slices of them cast to bytes or to `f32`s
 //! without a copy, for GPU uploads, wire formats and calibration blobs in
@@ -8,7 +8,7 @@
 //! Each type is `#[repr(C)]` and made only of `f32`s, so its bytes are its
 //! components in field order, without padding: `Quat` is `x, y, z, w`
 //! (scalar last, as glam's `Quat`, glTF and shaders), `RigTForm` is `t` then
-//! `r` (7 floats), `Matrix4` is 16 floats, column-major.
+//! `r` (7 floats), `Matrix3` and `Matrix4` are 9 and 16 floats, column-major.
 //! [`OrientationFilter`](crate::attitude::OrientationFilter) and
 //! [`Diagnostics`](crate::attitude::Diagnostics) are not `Pod`: they hold
 //! `bool`s, as [`AxesAlignment`](crate::attitude::AxesAlignment) holds an
@@ -41,7 +41,7 @@
 #[cfg(test)]
 mod tests {
     use crate::attitude::{FilterParams, InertialCalibration, MagneticCalibration, Smoother};
-    use crate::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+    use crate::{Cvec3, Cvec4, Matrix3, Matrix4, Quat, RigTForm};
 
     /// The floats of one value, without a copy (fails to compile if `T`
     /// loses `Pod`).
@@ -74,6 +74,9 @@ mod tests {
         let m = Matrix4::from_cols_array(&core::array::from_fn(|i| i as f32));
         let want: [f32; 16] = core::array::from_fn(|i| i as f32);
         assert_eq!(floats(&m), want, "column-major");
+        let m3 = Matrix3::from_cols_array(&core::array::from_fn(|i| i as f32));
+        let want: [f32; 9] = core::array::from_fn(|i| i as f32);
+        assert_eq!(floats(&m3), want, "column-major");
         let s = Smoother::new(Quat::from_wxyz(1.0, 2.0, 3.0, 4.0), 5.0);
         assert_eq!(floats(&s), [2.0, 3.0, 4.0, 1.0, 5.0]);
         let p = FilterParams::DEFAULT;
@@ -96,7 +99,7 @@ mod tests {
     #[test]
     fn every_type_is_zeroable() {
         assert!(zeroed_bits::<Cvec3>() && zeroed_bits::<Cvec4>() && zeroed_bits::<Quat>());
-        assert!(zeroed_bits::<RigTForm>() && zeroed_bits::<Matrix4>());
+        assert!(zeroed_bits::<RigTForm>() && zeroed_bits::<Matrix3>() && zeroed_bits::<Matrix4>());
         assert!(zeroed_bits::<Smoother>() && zeroed_bits::<FilterParams>());
         assert!(zeroed_bits::<InertialCalibration>() && zeroed_bits::<MagneticCalibration>());
         let q: Quat = bytemuck::Zeroable::zeroed();

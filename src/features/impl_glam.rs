@@ -1,6 +1,6 @@
 //! Conversions to and from [glam](https://docs.rs/glam) 0.34 (feature
 //! `glam`): `From` both ways for [`Quat`] (`glam::Quat`), [`Cvec3`]
-//! (`glam::Vec3` and `glam::Vec3A`), [`Cvec4`] (`glam::Vec4`) and
+//! (`glam::Vec3` and `glam::Vec3A`), [`Cvec4`] (`glam::Vec4`), [`Matrix3`] (`glam::Mat3`) and
 //! [`Matrix4`] (`glam::Mat4`), each exact, component by component; and
 //! [`RigTForm`] to `glam::Affine3A`, and back with `TryFrom`, which checks
 //! that the affine map is rigid.
@@ -26,7 +26,7 @@
 //! assert!(back.r.angle_to(a.r) < 1e-6);
 //! ```
 
-use crate::{Cvec3, Cvec4, Matrix4, NotRigid, Quat, RigTForm};
+use crate::{Cvec3, Cvec4, Matrix3, Matrix4, NotRigid, Quat, RigTForm};
 
 impl From<glam::Quat> for Quat {
     /// Component by component, exact.
@@ -99,6 +99,22 @@ impl From<Matrix4> for glam::Mat4 {
     #[inline]
     fn from(m: Matrix4) -> Self {
         glam::Mat4::from_cols_array(&m.to_cols_array())
+    }
+}
+
+impl From<glam::Mat3> for Matrix3 {
+    /// Column by column, exact.
+    #[inline]
+    fn from(m: glam::Mat3) -> Self {
+        Self::from_cols_array(&m.to_cols_array())
+    }
+}
+
+impl From<Matrix3> for glam::Mat3 {
+    /// Column by column, exact.
+    #[inline]
+    fn from(m: Matrix3) -> Self {
+        glam::Mat3::from_cols_array(&m.to_cols_array())
     }
 }
 
@@ -205,6 +221,12 @@ mod tests {
             assert_eq!(
                 bits(Matrix4::from(glam::Mat4::from(m)).to_cols_array()),
                 bits(c)
+            );
+            let c9: [f32; 9] = core::array::from_fn(|i| c[i]);
+            let m3 = Matrix3::from_cols_array(&c9);
+            assert_eq!(
+                bits(Matrix3::from(glam::Mat3::from(m3)).to_cols_array()),
+                bits(c9)
             );
         }
     }

@@ -29,7 +29,7 @@
 //! assert_eq!((m.s, m.v.z), (1.0, 0.0));
 //! ```
 
-use crate::{Cvec3, Cvec4, Matrix4, Quat};
+use crate::{Cvec3, Cvec4, Matrix3, Matrix4, Quat};
 
 impl From<mint::Vector3<f32>> for Cvec3 {
     fn from(v: mint::Vector3<f32>) -> Self {
@@ -111,6 +111,27 @@ impl From<Matrix4> for mint::ColumnMatrix4<f32> {
             w: w.into(),
         }
     }
+}
+
+impl From<mint::ColumnMatrix3<f32>> for Matrix3 {
+    fn from(m: mint::ColumnMatrix3<f32>) -> Self {
+        Self::from_cols(m.x.into(), m.y.into(), m.z.into())
+    }
+}
+
+impl From<Matrix3> for mint::ColumnMatrix3<f32> {
+    fn from(m: Matrix3) -> Self {
+        let [x, y, z] = m.cols;
+        Self {
+            x: x.into(),
+            y: y.into(),
+            z: z.into(),
+        }
+    }
+}
+
+impl mint::IntoMint for Matrix3 {
+    type MintType = mint::ColumnMatrix3<f32>;
 }
 
 impl mint::IntoMint for Cvec3 {

@@ -2,7 +2,8 @@
 //! (feature `nalgebra`, without nalgebra's default `std`): `From` both
 //! ways for [`Quat`] (`Quaternion<f32>` and `UnitQuaternion<f32>`),
 //! [`Cvec3`] (`Vector3<f32>` and `Point3<f32>`), [`Cvec4`]
-//! (`Vector4<f32>`), [`Matrix4`] (`Matrix4<f32>`) and [`RigTForm`]
+//! (`Vector4<f32>`), [`Matrix3`] (`Matrix3<f32>`), [`Matrix4`]
+//! (`Matrix4<f32>`) and [`RigTForm`]
 //! (`Isometry3<f32>`), each exact, component by component.
 //!
 //! nalgebra 0.35 needs Rust 1.89; the rest of the crate builds with 1.84.
@@ -28,7 +29,7 @@
 
 use nalgebra as na;
 
-use crate::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+use crate::{Cvec3, Cvec4, Matrix3, Matrix4, Quat, RigTForm};
 
 impl From<na::Quaternion<f32>> for Quat {
     /// `Quaternion::new(w, i, j, k)` to `Quat::from_wxyz(w, i, j, k)`, exact.
@@ -127,6 +128,24 @@ impl From<Matrix4> for na::Matrix4<f32> {
     }
 }
 
+impl From<na::Matrix3<f32>> for Matrix3 {
+    /// Column by column (both store column-major), exact.
+    #[inline]
+    fn from(m: na::Matrix3<f32>) -> Self {
+        let mut cols = [0.0; 9];
+        cols.copy_from_slice(m.as_slice());
+        Self::from_cols_array(&cols)
+    }
+}
+
+impl From<Matrix3> for na::Matrix3<f32> {
+    /// Column by column, exact.
+    #[inline]
+    fn from(m: Matrix3) -> Self {
+        na::Matrix3::from_column_slice(&m.to_cols_array())
+    }
+}
+
 impl From<na::Isometry3<f32>> for RigTForm {
     /// The translation and the rotation, exact: an `Isometry3` is a
     /// `RigTForm { t, r }` by another name.
@@ -192,6 +211,12 @@ mod tests {
             assert_eq!(
                 bits(Matrix4::from(na::Matrix4::from(m)).to_cols_array()),
                 bits(c)
+            );
+            let c9: [f32; 9] = core::array::from_fn(|i| c[i]);
+            let m3 = Matrix3::from_cols_array(&c9);
+            assert_eq!(
+                bits(Matrix3::from(na::Matrix3::from(m3)).to_cols_array()),
+                bits(c9)
             );
             let a = RigTForm::new(v, q);
             let back = RigTForm::from(na::Isometry3::from(a));

@@ -34,7 +34,7 @@ mod tests {
         AxesAlignment, Axis, FilterParams, InertialCalibration, MagneticCalibration,
         OrientationFilter, Smoother,
     };
-    use crate::{Cvec3, Cvec4, EulerRot, Matrix4, Quat, RigTForm};
+    use crate::{Cvec3, Cvec4, EulerRot, Matrix3, Matrix4, Quat, RigTForm};
     use serde::{de::DeserializeOwned, Serialize};
 
     /// Writes `value` to JSON, reads it back and returns both.
@@ -63,6 +63,9 @@ mod tests {
         let m = Matrix4::from(r);
         let (json, back) = round_trip(&m);
         assert_eq!(back, m, "{json}");
+        let m3 = Matrix3::from(m);
+        let (json, back) = round_trip(&m3);
+        assert_eq!(back, m3, "{json}");
         let p = FilterParams::DEFAULT;
         assert_eq!(round_trip(&p).1, p);
         let s = Smoother::new(q, 0.25);

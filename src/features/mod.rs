@@ -15,7 +15,7 @@ mod impl_serde;
 
 #[cfg(all(test, feature = "defmt"))]
 mod defmt_tests {
-    use crate::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
+    use crate::{Cvec3, Cvec4, Matrix3, Matrix4, Quat, RigTForm};
 
     fn implements_format<T: defmt::Format>() {}
 
@@ -26,6 +26,7 @@ mod defmt_tests {
         implements_format::<Cvec4>();
         implements_format::<Quat>();
         implements_format::<RigTForm>();
+        implements_format::<Matrix3>();
         implements_format::<Matrix4>();
     }
 }
