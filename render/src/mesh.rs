@@ -278,8 +278,10 @@ impl Mesh {
     /// assert!(Mesh::parse_obj(b"v 0 0 0\nv 3e38 0 0\nv 0 1 0\nf 1 2 3\n", 1.0, [1.0; 3]).is_err());
     /// ```
     pub fn parse_obj(text: &[u8], size: f32, color: [f32; 3]) -> Result<Self, String> {
+        let text = std::str::from_utf8(text).map_err(|e| format!("not UTF-8 text: {e}"))?;
+        check_face_indices(text)?;
         let (models, _materials) =
-            tobj::load_obj_buf(&mut &text[..], &tobj::GPU_LOAD_OPTIONS, |_| {
+            tobj::load_obj_buf(&mut text.as_bytes(), &tobj::GPU_LOAD_OPTIONS, |_| {
                 Err(tobj::LoadError::OpenFileFailed)
             })
             .map_err(|e| format!("cannot parse: {e}"))?;
@@ -380,6 +382,48 @@ impl Mesh {
             )
         })
     }
+}
+
+/// Refuses the face (`f`) and line (`l`) indices that `tobj` would turn
+/// into an arithmetic overflow (a panic in builds with overflow checks, a
+/// wrapped index without): a relative (negative) index reaching before the
+/// first position, texture coordinate or normal, and an index larger than
+/// the text is long (no file has that many elements). Lines are counted as
+/// `tobj` counts them.
+fn check_face_indices(text: &str) -> Result<(), String> {
+    let mut counts = [0usize; 3];
+    for (number, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => counts[0] += 1,
+            Some("vt") => counts[1] += 1,
+            Some("vn") => counts[2] += 1,
+            Some("f" | "l") => {
+                for word in words {
+                    for (kind, part) in word.split('/').enumerate().take(3) {
+                        let Ok(index) = part.parse::<isize>() else {
+                            continue;
+                        };
+                        let reach = index.unsigned_abs();
+                        let fits = if index < 0 {
+                            reach <= counts[kind]
+                        } else {
+                            reach <= text.len()
+                        };
+                        if !fits {
+                            return Err(format!(
+                                "line {}: index {index} refers to no {}",
+                                number + 1,
+                                ["position", "texture coordinate", "normal"][kind]
+                            ));
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
 }
 
 /// `v` normalized, or +y where it has no direction (a face without area).
@@ -550,6 +594,30 @@ mod tests {
     fn obj_read_is_bounded() {
         let err = Mesh::load_obj(Path::new("/dev/zero"), 1.0, [1.0; 3]).unwrap_err();
         assert!(err.contains("/dev/zero") && err.contains("64 MiB"), "{err}");
+    }
+
+    #[test]
+    fn obj_indices_that_would_overflow_are_refused() {
+        // A normal index far beyond the file, and a relative texture
+        // coordinate index before the first: tobj's index arithmetic
+        // overflowed on both (a panic with overflow checks).
+        for (name, text) in [
+            (
+                "normal",
+                "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//7000000000000000000\n",
+            ),
+            (
+                "texture",
+                "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/-2 2/1 3/1\n",
+            ),
+        ] {
+            let err = load_obj_text(name, text, 1.0).unwrap_err();
+            assert!(err.contains("line 5: index"), "{name}: {err}");
+        }
+        // Relative indices within the file are fine.
+        let mesh =
+            load_obj_text("relative", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n", 1.0).unwrap();
+        assert_eq!(mesh.triangles.len(), 1);
     }
 
     #[test]
