@@ -412,11 +412,16 @@ mod tests {
         let mut rng = rand::rngs::StdRng::seed_from_u64(15);
         let mut specials = std::vec::Vec::from(rare_pairs());
         specials.push(just_past_the_small_angles());
-        let mut steps: std::vec::Vec<[(Quat, Quat); PAIRS]> = (0..1_000)
+        // Fewer random steps under Miri, which interprets every instruction.
+        let random_steps = if cfg!(miri) { 10 } else { 1_000 };
+        let mut steps: std::vec::Vec<[(Quat, Quat); PAIRS]> = (0..random_steps)
             .map(|_| core::array::from_fn(|_| (unit(&mut rng), unit(&mut rng))))
             .collect();
+        // Under Miri every fifth lane (the first and the last among them).
+        let lanes: std::vec::Vec<usize> =
+            (0..PAIRS).step_by(if cfg!(miri) { 5 } else { 1 }).collect();
         for &special in &specials {
-            for lane in 0..PAIRS {
+            for &lane in &lanes {
                 let mut step: [(Quat, Quat); PAIRS] =
                     core::array::from_fn(|_| (unit(&mut rng), unit(&mut rng)));
                 step[lane] = special;
@@ -441,8 +446,8 @@ mod tests {
                 }
             }
         }
-        // Every pair but the eight rare ones, each in each lane.
-        assert_eq!(left_count, 8 * PAIRS);
+        // Every pair but the eight rare ones, each in each lane tried.
+        assert_eq!(left_count, 8 * lanes.len());
         assert_eq!(done_count, steps.len() * PAIRS - left_count);
     }
 
