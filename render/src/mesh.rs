@@ -275,7 +275,8 @@ impl Mesh {
     /// use rigtform_render::Mesh;
     /// let mesh = Mesh::parse_obj(b"v 0 0 0\nv 4 0 0\nv 0 2 0\nf 1 2 3\n", 1.0, [1.0; 3]).unwrap();
     /// assert_eq!(mesh.bounds().0.x, -0.5);
-    /// assert!(Mesh::parse_obj(b"v 0 0 0\nv 3e38 0 0\nv 0 1 0\nf 1 2 3\n", 1.0, [1.0; 3]).is_err());
+    /// // An extent of 4e38 overflows f32:
+    /// assert!(Mesh::parse_obj(b"v -2e38 0 0\nv 2e38 0 0\nv 0 1 0\nf 1 2 3\n", 1.0, [1.0; 3]).is_err());
     /// ```
     pub fn parse_obj(text: &[u8], size: f32, color: [f32; 3]) -> Result<Self, String> {
         let text = std::str::from_utf8(text).map_err(|e| format!("not UTF-8 text: {e}"))?;
