@@ -115,7 +115,9 @@ pub const TAN_MAX_REL_ERROR: f32 = backend::TAN_MAX_REL_ERROR;
 /// input, subnormal to `f32::MAX`.
 pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.2e-7; // 1.723e-7
 /// `|norm - 1|` of the result of `*`, `pow`, `slerp` and `from_axis_angle`
-/// on unit inputs (and of `pow` on any finite non-zero input).
+/// on unit inputs (and of `pow` on any finite non-zero input); for `slerp`,
+/// relative to the norm of its first input (`| |r| / |a| - 1 |`), which
+/// for an f32 unit quaternion is 1 only up to its rounding.
 pub const UNIT_NORM_ERROR: f32 = backend::UNIT_NORM_ERROR;
 /// `|norm - 1|` after a chain of 1,000,000 [`Quat::mul_renormalized`](crate::Quat::mul_renormalized)
 /// products cycling through 1,000 random rotations of up to 0.1 rad

@@ -264,7 +264,8 @@ impl RigTForm {
     /// # Accuracy
     ///
     /// That of [`interpolate`](Self::interpolate): the results are its
-    /// results.
+    /// results. Floating-point exceptions: as the section of that name of
+    /// [`Quat::slerp_slice`](crate::Quat::slerp_slice) says.
     ///
     /// # Examples
     ///

@@ -20,34 +20,55 @@ import csv
 import gzip
 import sys
 
-import numpy as np
-from vqf import VQF
-
 # BROAD's sampling interval: 2000/7 Hz.
 BROAD_DT = 0.0035
 
+COLUMNS = (
+    "gyr_x", "gyr_y", "gyr_z",
+    "acc_x", "acc_y", "acc_z",
+    "mag_x", "mag_y", "mag_z",
+)
+
 
 def read_trial(path):
-    """The gyro (rad/s), accelerometer (m/s^2) and magnetometer (uT) columns."""
+    """The gyro (rad/s), accelerometer (m/s^2) and magnetometer (uT) columns,
+    one list of nine floats per sample. Reads the file as the Rust reader
+    does (testkit/src/broad/data.rs): a UTF-8 byte-order mark is skipped,
+    and so are blank lines; a file without samples, a missing column or a
+    field that is not a number is an error naming the file and the line."""
     opener = gzip.open if path.endswith(".gz") else open
-    with opener(path, "rt", newline="") as f:
+    with opener(path, "rt", encoding="utf-8-sig", newline="") as f:
         rows = csv.reader(f)
-        header = next(rows)
-        columns = [header.index(name) for name in (
-            "gyr_x", "gyr_y", "gyr_z",
-            "acc_x", "acc_y", "acc_z",
-            "mag_x", "mag_y", "mag_z",
-        )]
-        data = np.array([[float(row[c]) for c in columns] for row in rows])
-    return (np.ascontiguousarray(data[:, 0:3]),
-            np.ascontiguousarray(data[:, 3:6]),
-            np.ascontiguousarray(data[:, 6:9]))
+        header = [name.strip() for name in next(rows, [])]
+        missing = [name for name in COLUMNS if name not in header]
+        if missing:
+            raise ValueError(f"{path}: line 1: no column {missing[0]!r}")
+        columns = [header.index(name) for name in COLUMNS]
+        data = []
+        for row in rows:
+            if all(not field.strip() for field in row):
+                continue
+            try:
+                data.append([float(row[c]) for c in columns])
+            except (IndexError, ValueError) as e:
+                raise ValueError(f"{path}: line {rows.line_num}: {e}") from None
+    if not data:
+        raise ValueError(f"{path}: no samples")
+    return data
 
 
 def main():
     if len(sys.argv) != 2:
         sys.exit("usage: vqf_broad.py TRIAL.csv[.gz]")
-    gyr, acc, mag = read_trial(sys.argv[1])
+    try:
+        data = read_trial(sys.argv[1])
+    except (OSError, ValueError) as e:
+        sys.exit(f"error: {e}")
+    import numpy as np
+    from vqf import VQF
+
+    data = np.array(data)
+    gyr, acc, mag = (np.ascontiguousarray(data[:, i:i + 3]) for i in (0, 3, 6))
     six = VQF(BROAD_DT).updateBatch(gyr, acc)["quat6D"]
     nine = VQF(BROAD_DT).updateBatch(gyr, acc, mag)["quat9D"]
     out = sys.stdout

@@ -1,7 +1,9 @@
 //! The ways to build a rotation, on raw bit patterns: Euler angles both
-//! ways (every order), `from_matrix` of `from_quat`, `from_rotation_arc`
-//! and `look_at`. No panic on anything; the laws where their
-//! preconditions hold.
+//! ways (every order), `from_matrix` of `from_quat`, `from_rotation_arc`,
+//! `look_at`, `from_axis_angle`, `from_scaled_axis`, the rotations about
+//! the axes (of `Quat` and of `RigTForm`). No panic on anything; NaN out
+//! for NaN in where the docs say so; unit results for finite input; the
+//! laws where their preconditions hold.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -17,6 +19,14 @@ struct Input {
     to: [f32; 3],
     up: [f32; 3],
     matrix: [f32; 16],
+    axis: [f32; 3],
+    angle: f32,
+    scaled: [f32; 3],
+}
+
+/// Whether `q` is of unit norm to the bound the docs give.
+fn unit_norm(q: Quat) -> bool {
+    (q.norm() - 1.0).abs() <= rigtform::accuracy::UNIT_NORM_ERROR
 }
 
 /// Squared lengths in [2^-40, 2^80]: the arc law's precondition.
@@ -56,5 +66,51 @@ fuzz_target!(|input: Input| {
     }
     if moderate(from) && moderate(to) {
         assert_holds(laws::rotation_arc_takes_from_to_to(from, to));
+    }
+
+    // Axis and angle: NaN for a NaN or infinite axis or angle, the identity
+    // for a zero axis, else unit.
+    let [ax, ay, az] = input.axis;
+    let axis = Cvec3::new(ax, ay, az);
+    let angle = input.angle;
+    let q = Quat::from_axis_angle(axis, angle);
+    if !(axis.is_finite() && angle.is_finite()) {
+        assert!(q.is_nan(), "{axis:?} {angle}: {q:?}");
+    } else if axis == Cvec3::ZERO {
+        assert_eq!(q, Quat::IDENTITY);
+    } else {
+        assert!(unit_norm(q), "{axis:?} {angle}: {q:?}");
+    }
+    // The rotations about the axes, of Quat and of RigTForm.
+    let about = [
+        (
+            Quat::from_rotation_x(angle),
+            RigTForm::from_rotation_x(angle),
+        ),
+        (
+            Quat::from_rotation_y(angle),
+            RigTForm::from_rotation_y(angle),
+        ),
+        (
+            Quat::from_rotation_z(angle),
+            RigTForm::from_rotation_z(angle),
+        ),
+    ];
+    for (q, a) in about {
+        if angle.is_finite() {
+            assert!(unit_norm(q), "{angle}: {q:?}");
+        }
+        let bits = |q: Quat| [q.w, q.x, q.y, q.z].map(f32::to_bits);
+        assert_eq!(bits(a.r), bits(q));
+        assert_eq!(a.t, Cvec3::ZERO);
+    }
+    // The scaled axis: NaN for a NaN or infinite component, else unit.
+    let [sx, sy, sz] = input.scaled;
+    let v = Cvec3::new(sx, sy, sz);
+    let q = Quat::from_scaled_axis(v);
+    if v.is_finite() {
+        assert!(unit_norm(q), "{v:?}: {q:?}");
+    } else {
+        assert!(q.is_nan(), "{v:?}: {q:?}");
     }
 });

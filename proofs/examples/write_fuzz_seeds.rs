@@ -200,6 +200,7 @@ fn main() -> std::io::Result<()> {
         ] {
             let mut m = identity;
             m[i % 11] = e;
+            // Then an axis and angle, and a scaled axis.
             constructors.push(
                 [
                     bytes(&q),
@@ -207,6 +208,7 @@ fn main() -> std::io::Result<()> {
                     order.to_vec(),
                     bytes(&[from, to, up].concat()),
                     bytes(&m),
+                    bytes(&[e, 1.0, 0.0, angles[0], 0.0, e, 1.0]),
                 ]
                 .concat(),
             );
@@ -218,5 +220,102 @@ fn main() -> std::io::Result<()> {
     write("matrix", matrix)?;
     write("constructors", constructors)?;
     write("sampler", sampler)?;
+    write("slices", slices_seeds())?;
+    write("blend", blend_seeds())?;
+    write("obj", obj_seeds())?;
+    write("csv", csv_seeds())?;
     regressions()
+}
+
+/// The slices target's seeds: `alpha`, whether it is taken into (0, 1],
+/// the extra length of `out`, then elements of two quaternions, a
+/// translation and a kind byte (raw, unit, identical, opposite, one ulp
+/// apart, raw identical), at the lengths around the vector lanes' steps of
+/// sixteen pairs.
+fn slices_seeds() -> Vec<Vec<u8>> {
+    let mut seeds = Vec::new();
+    for (i, &len) in [1usize, 7, 15, 16, 17, 31, 32, 33, 40].iter().enumerate() {
+        for (alpha, in_unit) in [(0.5f32, 1u8), (0.25, 0), (EDGE_F32[i % EDGE_F32.len()], 0)] {
+            let mut seed = bytes(&[alpha]);
+            seed.extend([in_unit, u8::try_from(len % 4).unwrap_or(0)]);
+            for k in 0..len {
+                let t = k as f32;
+                let e = EDGE_F32[(i + k) % EDGE_F32.len()];
+                seed.extend(bytes(&[0.5, 0.1 * t, -0.3, 0.7]));
+                seed.extend(bytes(&[0.2, -0.4 * t, 0.6, e]));
+                seed.extend(bytes(&[t, e, -1.0]));
+                seed.push(u8::try_from(k % 6).unwrap_or(0) | u8::try_from(k % 8 * 16).unwrap_or(0));
+            }
+            seeds.push(seed);
+        }
+    }
+    seeds
+}
+
+/// The blend target's seeds: whether to normalize, the power of two, then
+/// entries of a quaternion and a weight, with the weights from the
+/// subnormal to `f32::MAX` and the edge values.
+fn blend_seeds() -> Vec<Vec<u8>> {
+    let mut seeds = Vec::new();
+    let weights = [f32::MAX, -f32::MAX, 1.0, f32::from_bits(1), 1e38, 0.5];
+    for (i, e) in EDGE_F32.into_iter().enumerate() {
+        let power = [1i8, -1, 60, -60][i % 4].to_le_bytes()[0];
+        let mut seed = vec![1, power];
+        let entries = [
+            ([0.5, 0.5, 0.5, 0.5], weights[i % weights.len()]),
+            ([0.0, 1.0, 0.0, 0.0], e),
+            ([0.5, -0.5, 0.5, -0.5], weights[(i + 1) % weights.len()]),
+            ([e, 0.0, 0.0, 1.0], 1.0),
+        ];
+        for (q, w) in entries.iter().take(1 + i % 4) {
+            seed.extend(bytes(q));
+            seed.extend(bytes(&[*w]));
+        }
+        seeds.push(seed);
+    }
+    seeds
+}
+
+/// The OBJ target's seeds: OBJ text as a user gives it, good and bad.
+fn obj_seeds() -> Vec<Vec<u8>> {
+    [
+        "v 0 0 0\nv 4 0 0\nv 0 2 0\nf 1 2 3\n",
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
+         f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\nf 1/1/1 2/1/1 3/1/1\n",
+        "o a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1 0 0\nf 1//1 2//1 3//1\no b\nv 0 0 1\nv 0 1 1\nv 1 0 1\nf 4 5 6\n",
+        "v -2e38 0 0\nv 2e38 0 0\nv 0 1 0\nf 1 2 3\n",
+        "v 0 0 0\nv 1e-45 0 0\nv 0 1e-45 0\nf 1 2 3\n",
+        "v 1e20 0 0\nv 3e20 0 0\nv 1e20 2e20 0\nf 1 2 3\n",
+        "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\nf -1 -2 -3\n",
+        "v nan 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\n",
+        "mtllib missing.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 \\\n",
+    ]
+    .iter()
+    .map(|s| s.as_bytes().to_vec())
+    .collect()
+}
+
+/// The CSV target's seeds: BROAD trials and a Fusion log, with a
+/// byte-order mark, blank lines, CRLF, and bad rows.
+fn csv_seeds() -> Vec<Vec<u8>> {
+    let broad = "gyr_x,gyr_y,gyr_z,acc_x,acc_y,acc_z,mag_x,mag_y,mag_z,quat_w,quat_x,quat_y,quat_z,movement";
+    let row = "0.1,0,0,0,0,9.81,0,16,-41,1,0,0,0,1";
+    let fusion = "Time (s),Gyroscope X (deg/s),Gyroscope Y (deg/s),Gyroscope Z (deg/s),Accelerometer X (g),Accelerometer Y (g),Accelerometer Z (g),Magnetometer X (uT),Magnetometer Y (uT),Magnetometer Z (uT)";
+    let fusion_row = "0.01,1,2,3,0,0,1,20,0,-40";
+    [
+        format!("{broad}\n{row}\n{row}\n"),
+        format!("\u{feff}{broad}\n{row}\n"),
+        format!("{broad}\r\n\r\n{row}\r\n  \r\n{row}\r\n"),
+        format!("{broad}\n{row}\n0.1,0,0,x,0,9.81,0,16,-41,1,0,0,0,1\n"),
+        format!("{broad}\n0.1,0,0,0,0,9.81,0,16,-41,nan,nan,nan,nan,2\n"),
+        format!("{broad}\n{row},7\n0,0\n"),
+        format!("{fusion}\n{fusion_row}\n{fusion_row}\n"),
+        "a,b\n1,2\n".to_string(),
+        String::new(),
+    ]
+    .into_iter()
+    .map(String::into_bytes)
+    .collect()
 }

@@ -298,15 +298,18 @@ fn read_mesh(
                 .base_color_factor();
             [c[0], c[1], c[2]]
         };
-        let mut part = Mesh {
+        let part = Mesh {
             normals: Vec::new(),
             colors: vec![color; n],
             triangles,
             positions,
         };
-        part.normals = match reader.read_normals() {
-            Some(normals) => normals.map(|v| vec3(v).normalize()).collect(),
-            None => part.face_averaged_normals(),
+        let part = match reader.read_normals() {
+            Some(normals) => Mesh {
+                normals: normals.map(|v| vec3(v).normalize()).collect(),
+                ..part
+            },
+            None => part.with_face_averaged_normals(),
         };
         if part.normals.len() != n {
             return Err(format!("{what}: NORMAL and POSITION have different counts"));

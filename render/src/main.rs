@@ -14,7 +14,7 @@ use rigtform_render::demo::{
     contact_sheet, gif_sequence, labelled_contact_sheet, load_body, sheet_frames, Comparison, Demo,
 };
 use rigtform_render::gltf_scene::GltfScene;
-use rigtform_render::output::{write_gif, write_png};
+use rigtform_render::output::{replace_outputs, write_gif, write_png, OutputSet};
 use rigtform_render::{Cull, Image, Msaa, Settings};
 
 /// Renders keyframe animations of RigTForms: slerp side by side with
@@ -54,9 +54,23 @@ struct Args {
     threads: Option<u32>,
 
     /// Rows of the contact sheet: evenly spaced frames, first and last
-    /// included (2 to the frame count).
-    #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(2..=1000))]
-    sheet_rows: u32,
+    /// included (2 to the frame count; default 5, or the frame count if
+    /// fewer).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(2..=1000))]
+    sheet_rows: Option<u32>,
+
+    /// The most memory the run may need, in MiB: settings that would need
+    /// more (frames kept for the GIF and the contact sheet, one
+    /// framebuffer per thread) are refused before anything is rendered.
+    #[arg(long, default_value_t = 4096, value_parser = clap::value_parser!(u64).range(64..))]
+    memory_limit: u64,
+
+    /// Play a glTF 2.0 file's animation instead (.gltf with its buffers
+    /// inline or beside it, or .glb): every channel of every animation on
+    /// one clock, from the earliest key to the latest, through rigtform's
+    /// samplers. Skins and morph targets are not played (a note says so).
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["comparison", "spline", "obj"])]
+    gltf: Option<PathBuf>,
 
     /// Skip the GIF (it is the slowest file to encode).
     #[arg(long)]
@@ -67,13 +81,6 @@ struct Args {
     /// angular speed (angular_speed.png).
     #[arg(long, conflicts_with = "comparison")]
     spline: bool,
-
-    /// Play a glTF 2.0 file's animation instead (.gltf with its buffers
-    /// inline or beside it, or .glb): every channel of every animation on
-    /// one clock, from the earliest key to the latest, through rigtform's
-    /// samplers. Skins and morph targets are not played (a note says so).
-    #[arg(long, value_name = "FILE", conflicts_with_all = ["comparison", "spline", "obj"])]
-    gltf: Option<PathBuf>,
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -102,21 +109,51 @@ fn parse_msaa(s: &str) -> Result<u32, String> {
     }
 }
 
-/// Removes frame files an earlier, longer run left behind.
-fn remove_old_frames(dir: &Path) -> std::io::Result<()> {
-    for entry in std::fs::read_dir(dir)? {
-        let path = entry?.path();
-        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
-        if name.starts_with("frame_") && name.ends_with(".png") {
-            std::fs::remove_file(&path)?;
-        }
-    }
-    Ok(())
+/// Gap between panels, in pixels (the demo's layout).
+const PANEL_GAP: u64 = 4;
+/// The contact sheet's margin and gap, in pixels (its layout).
+const SHEET_MARGIN: u64 = 8 * 11 + 8;
+
+/// An upper estimate of the bytes a run needs at its peak, the largest of
+/// its three phases: rendering (`threads` frames at a time, each with its
+/// framebuffer, panel and frame images and the PNG's bytes, beside the
+/// frames kept), the contact sheet, and the GIF (one palette image per
+/// frame, and per thread the quantizer's copies of a frame).
+fn memory_needed(args: &Args, panels: u64, sheet_rows: u64, threads: u64) -> u64 {
+    let (w, h) = (u64::from(args.size.0), u64::from(args.size.1));
+    let samples = if args.msaa == 4 { 4 } else { 1 };
+    let frames = u64::from(args.frames);
+    let frame_pixels =
+        (panels * w + (panels - 1) * PANEL_GAP) * (h + u64::from(rigtform_render::demo::LABEL_BAR));
+    let frame = 3 * frame_pixels;
+    let kept = if args.no_gif { sheet_rows } else { frames } * frame;
+    let in_flight = threads.min(frames);
+    let rendering = kept + in_flight * (16 * samples * w * h + 3 * w * h + 3 * frame);
+    let sheet = kept + 2 * 3 * sheet_rows * (frame_pixels + (SHEET_MARGIN + PANEL_GAP) * h);
+    let gif = if args.no_gif {
+        0
+    } else {
+        kept + frames * frame_pixels + in_flight * 7 * frame_pixels + frame_pixels
+    };
+    rendering.max(sheet).max(gif)
 }
 
+/// The outputs of a run, staged and swapped in whole.
+const OUTPUTS: OutputSet<'static> = OutputSet {
+    files: &["contact_sheet.png", "animation.gif", "angular_speed.png"],
+    frames: "frames",
+};
+
 /// `--gltf`: loads and checks the whole file before anything is written,
-/// then renders its animation into frames, a contact sheet and a GIF.
-fn run_gltf(args: &Args, path: &Path, start: Instant) -> Result<String, String> {
+/// then renders its animation into frames, a contact sheet and a GIF,
+/// staged and swapped in whole as the demo's.
+fn run_gltf(
+    args: &Args,
+    path: &Path,
+    sheet_rows: u32,
+    pool: &rayon::ThreadPool,
+    start: Instant,
+) -> Result<String, String> {
     let scene = GltfScene::load(path)?;
     for note in &scene.unsupported {
         eprintln!("note: {}: {note}", path.display());
@@ -133,46 +170,44 @@ fn run_gltf(args: &Args, path: &Path, start: Instant) -> Result<String, String> 
         msaa: if args.msaa == 4 { Msaa::X4 } else { Msaa::Off },
         cull: Cull::Back,
     };
-    let frames_dir = args.out.join("frames");
-    std::fs::create_dir_all(&frames_dir)
-        .map_err(|e| format!("cannot create {}: {e}", frames_dir.display()))?;
-    remove_old_frames(&frames_dir)
-        .map_err(|e| format!("cannot clean {}: {e}", frames_dir.display()))?;
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(args.threads.unwrap_or(0) as usize)
-        .build()
-        .map_err(|e| format!("cannot start threads: {e}"))?;
-    let images: Vec<Image> = pool.install(|| {
-        (0..args.frames)
-            .into_par_iter()
-            .map(|i| {
-                let image = demo.render_frame(demo.time(i, args.frames), &settings);
-                write_png(&frames_dir.join(format!("frame_{i:03}.png")), &image)
-                    .map_err(|e| e.to_string())?;
-                Ok(image)
-            })
-            .collect::<Result<_, String>>()
+    let mut written = String::new();
+    replace_outputs(&args.out, OUTPUTS, |stage| {
+        let frames_dir = stage.join(OUTPUTS.frames);
+        let images: Vec<Image> = pool.install(|| {
+            (0..args.frames)
+                .into_par_iter()
+                .map(|i| {
+                    let image = demo.render_frame(demo.time(i, args.frames), &settings);
+                    write_png(&frames_dir.join(format!("frame_{i:03}.png")), &image)
+                        .map_err(|e| e.to_string())?;
+                    Ok(image)
+                })
+                .collect::<Result<_, String>>()
+        })?;
+        let rows: Vec<(f32, &Image)> = sheet_frames(args.frames, sheet_rows)
+            .into_iter()
+            .map(|i| (demo.time(i, args.frames), &images[i as usize]))
+            .collect();
+        write_png(
+            &stage.join("contact_sheet.png"),
+            &labelled_contact_sheet(&rows, "t (s)"),
+        )
+        .map_err(|e| e.to_string())?;
+        written = format!(
+            "{} frames of {} channel(s), {t0:.3} s to {t1:.3} s, in {}, {}",
+            args.frames,
+            demo.scene().channels.len(),
+            args.out.join(OUTPUTS.frames).display(),
+            args.out.join("contact_sheet.png").display()
+        );
+        if !args.no_gif {
+            let sequence = gltf::gif_sequence(args.frames, t1 - t0);
+            pool.install(|| write_gif(&stage.join("animation.gif"), &images, &sequence))
+                .map_err(|e| e.to_string())?;
+            written += &format!(", {}", args.out.join("animation.gif").display());
+        }
+        Ok(())
     })?;
-    let rows: Vec<(f32, &Image)> = sheet_frames(args.frames, args.sheet_rows)
-        .into_iter()
-        .map(|i| (demo.time(i, args.frames), &images[i as usize]))
-        .collect();
-    let sheet_path = args.out.join("contact_sheet.png");
-    write_png(&sheet_path, &labelled_contact_sheet(&rows, "t (s)")).map_err(|e| e.to_string())?;
-    let mut written = format!(
-        "{} frames of {} channel(s), {t0:.3} s to {t1:.3} s, in {}, {}",
-        args.frames,
-        demo.scene().channels.len(),
-        frames_dir.display(),
-        sheet_path.display()
-    );
-    if !args.no_gif {
-        let gif_path = args.out.join("animation.gif");
-        let sequence = gltf::gif_sequence(args.frames, t1 - t0);
-        pool.install(|| write_gif(&gif_path, &images, &sequence))
-            .map_err(|e| e.to_string())?;
-        written += &format!(", {}", gif_path.display());
-    }
     Ok(format!(
         "wrote {written} in {:.2} s",
         start.elapsed().as_secs_f64()
@@ -181,14 +216,43 @@ fn run_gltf(args: &Args, path: &Path, start: Instant) -> Result<String, String> 
 
 fn run(args: &Args) -> Result<String, String> {
     let start = Instant::now();
-    if args.sheet_rows > args.frames {
+    let sheet_rows = args.sheet_rows.unwrap_or(args.frames.min(5));
+    if sheet_rows > args.frames {
         return Err(format!(
-            "--sheet-rows {} is more than --frames {}",
-            args.sheet_rows, args.frames
+            "--sheet-rows {sheet_rows} is more than --frames {}",
+            args.frames
         ));
     }
+    let threads = match args.threads {
+        Some(n) => u64::from(n),
+        None => std::thread::available_parallelism().map_or(1, |n| n.get() as u64),
+    };
+    let panels = if args.gltf.is_some() {
+        1
+    } else if args.spline {
+        Keyed::BOTH.len()
+    } else {
+        args.comparison.panels().len()
+    } as u64;
+    let needed = memory_needed(args, panels, u64::from(sheet_rows), threads);
+    if needed > args.memory_limit << 20 {
+        return Err(format!(
+            "--size {}x{} with --frames {} needs about {} MiB, more than --memory-limit {} MiB: \
+             use a smaller --size, fewer --frames, --no-gif or fewer --threads, \
+             or raise --memory-limit if the machine has the memory",
+            args.size.0,
+            args.size.1,
+            args.frames,
+            needed.div_ceil(1 << 20),
+            args.memory_limit
+        ));
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads as usize)
+        .build()
+        .map_err(|e| format!("cannot start threads: {e}"))?;
     if let Some(path) = &args.gltf {
-        return run_gltf(args, path, start);
+        return run_gltf(args, path, sheet_rows, &pool, start);
     }
     let body = args.obj.as_deref().map(load_body).transpose()?;
     let spline_demo = args.spline.then(|| SplineDemo::new(body.clone()));
@@ -199,60 +263,71 @@ fn run(args: &Args) -> Result<String, String> {
         msaa: if args.msaa == 4 { Msaa::X4 } else { Msaa::Off },
         cull: Cull::Back,
     };
-    let frames_dir = args.out.join("frames");
-    std::fs::create_dir_all(&frames_dir)
-        .map_err(|e| format!("cannot create {}: {e}", frames_dir.display()))?;
-    remove_old_frames(&frames_dir)
-        .map_err(|e| format!("cannot clean {}: {e}", frames_dir.display()))?;
+    let set = OUTPUTS;
+    let mut render_time = start.elapsed();
+    let mut written = String::new();
+    replace_outputs(&args.out, set, |stage| {
+        let frames_dir = stage.join(set.frames);
+        let bar = ProgressBar::new(u64::from(args.frames)).with_style(
+            ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} frames, {elapsed}")
+                .map_err(|e| e.to_string())?
+                .progress_chars("=> "),
+        );
+        bar.set_message("rendering");
+        let on_sheet = sheet_frames(args.frames, sheet_rows);
+        // Frames in parallel (and bands in parallel inside each): every frame is
+        // a pure function of its alpha, so the files do not depend on the order.
+        // Only the frames the GIF or the contact sheet shows are kept.
+        let images: Vec<Option<Image>> = pool.install(|| {
+            (0..args.frames)
+                .into_par_iter()
+                .map(|i| {
+                    let alpha = Demo::alpha(i, args.frames);
+                    let image = match &spline_demo {
+                        Some(s) => s.render_frame(alpha, &settings),
+                        None => demo.render_frame(alpha, &settings),
+                    };
+                    write_png(&frames_dir.join(format!("frame_{i:03}.png")), &image)
+                        .map_err(|e| e.to_string())?;
+                    bar.inc(1);
+                    Ok((!args.no_gif || on_sheet.contains(&i)).then_some(image))
+                })
+                .collect::<Result<_, String>>()
+        })?;
+        bar.finish_and_clear();
+        render_time = start.elapsed();
 
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(args.threads.unwrap_or(0) as usize)
-        .build()
-        .map_err(|e| format!("cannot start threads: {e}"))?;
-    let bar = ProgressBar::new(u64::from(args.frames)).with_style(
-        ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} frames, {elapsed}")
-            .map_err(|e| e.to_string())?
-            .progress_chars("=> "),
-    );
-    bar.set_message("rendering");
-    // Frames in parallel (and bands in parallel inside each): every frame is
-    // a pure function of its alpha, so the files do not depend on the order.
-    let images: Vec<Image> = pool.install(|| {
-        (0..args.frames)
-            .into_par_iter()
-            .map(|i| {
-                let alpha = Demo::alpha(i, args.frames);
-                let image = match &spline_demo {
-                    Some(s) => s.render_frame(alpha, &settings),
-                    None => demo.render_frame(alpha, &settings),
-                };
-                write_png(&frames_dir.join(format!("frame_{i:03}.png")), &image)
-                    .map_err(|e| e.to_string())?;
-                bar.inc(1);
-                Ok(image)
-            })
-            .collect::<Result<_, String>>()
-    })?;
-    bar.finish_and_clear();
-    let render_time = start.elapsed();
-
-    let rows: Vec<(f32, &Image)> = sheet_frames(args.frames, args.sheet_rows)
-        .into_iter()
-        .map(|i| (Demo::alpha(i, args.frames), &images[i as usize]))
-        .collect();
-    let sheet_path = args.out.join("contact_sheet.png");
-    write_png(&sheet_path, &contact_sheet(&rows)).map_err(|e| e.to_string())?;
-    let mut written = format!(
-        "{} frames in {}, {}",
-        args.frames,
-        frames_dir.display(),
-        sheet_path.display()
-    );
-    if let Some(s) = &spline_demo {
-        let plot_path = args.out.join("angular_speed.png");
-        write_png(&plot_path, &spline::speed_plot(s.keys(), 640, 320))
+        let rows: Vec<(f32, &Image)> = on_sheet
+            .iter()
+            .filter_map(|&i| Some((Demo::alpha(i, args.frames), images[i as usize].as_ref()?)))
+            .collect();
+        write_png(&stage.join("contact_sheet.png"), &contact_sheet(&rows))
             .map_err(|e| e.to_string())?;
-        written += &format!(", {}", plot_path.display());
+        let out = &args.out;
+        written = format!(
+            "{} frames in {}, {}",
+            args.frames,
+            out.join(set.frames).display(),
+            out.join("contact_sheet.png").display()
+        );
+        if let Some(s) = &spline_demo {
+            write_png(
+                &stage.join("angular_speed.png"),
+                &spline::speed_plot(s.keys(), 640, 320),
+            )
+            .map_err(|e| e.to_string())?;
+            written += &format!(", {}", out.join("angular_speed.png").display());
+        }
+        if !args.no_gif {
+            let images: Vec<Image> = images.into_iter().flatten().collect();
+            let there_and_back = gif_sequence(args.frames);
+            pool.install(|| write_gif(&stage.join("animation.gif"), &images, &there_and_back))
+                .map_err(|e| e.to_string())?;
+            written += &format!(", {}", out.join("animation.gif").display());
+        }
+        Ok(())
+    })?;
+    if let Some(s) = &spline_demo {
         for method in Keyed::BOTH {
             let (jump, key) = spline::largest_jump(method, s.keys());
             println!(
@@ -260,13 +335,6 @@ fn run(args: &Args) -> Result<String, String> {
                 method.title()
             );
         }
-    }
-    if !args.no_gif {
-        let there_and_back = gif_sequence(args.frames);
-        let gif_path = args.out.join("animation.gif");
-        pool.install(|| write_gif(&gif_path, &images, &there_and_back))
-            .map_err(|e| e.to_string())?;
-        written += &format!(", {}", gif_path.display());
     }
     Ok(format!(
         "wrote {written} in {:.2} s (rendering and PNGs {:.2} s, {} threads)",

@@ -1,6 +1,9 @@
 //! Triangle meshes: the built-in cube, sphere, ground plane and axes body,
 //! generated in code, and OBJ files loaded with `tobj`.
 
+use std::fs::File;
+use std::io::Read;
+use std::ops::Range;
 use std::path::Path;
 
 use rigtform::Cvec3;
@@ -216,12 +219,20 @@ impl Mesh {
     /// Loads every model of an OBJ file (with `tobj`, triangulated), coloured
     /// `color`, centred on its bounding box and scaled so that its largest
     /// extent is `size`. Vertices without normals get the area-weighted
-    /// average of their faces' normals.
+    /// average of their faces' normals (any unit normal where the faces
+    /// have no area). Material libraries are not read. At most
+    /// [`MAX_OBJ_BYTES`](Self::MAX_OBJ_BYTES) are read from the file, so
+    /// a device or pipe without end (`/dev/zero`) is an error, not an
+    /// endless read.
     ///
     /// # Errors
     ///
-    /// A message naming the file when it cannot be read or parsed, holds no
-    /// triangle, or has a non-finite coordinate.
+    /// A message naming the file when it cannot be read or parsed, is
+    /// longer than [`MAX_OBJ_BYTES`](Self::MAX_OBJ_BYTES), holds no
+    /// triangle, or has a coordinate that is not finite or that centring
+    /// and scaling would take out of the finite floats (its extent
+    /// overflows, about 1.7e38 and more, or is so small that `size`
+    /// divided by it does).
     ///
     /// ```
     /// use rigtform_render::Mesh;
@@ -234,9 +245,51 @@ impl Mesh {
     /// std::fs::remove_dir_all(&dir).unwrap();
     /// ```
     pub fn load_obj(path: &Path, size: f32, color: [f32; 3]) -> Result<Self, String> {
-        let (models, _materials) = tobj::load_obj(path, &tobj::GPU_LOAD_OPTIONS)
+        let named = |e: String| format!("OBJ file {}: {e}", path.display());
+        let file = File::open(path)
             .map_err(|e| format!("cannot load OBJ file {}: {e}", path.display()))?;
+        let mut text = Vec::new();
+        file.take(Self::MAX_OBJ_BYTES + 1)
+            .read_to_end(&mut text)
+            .map_err(|e| format!("cannot load OBJ file {}: {e}", path.display()))?;
+        if text.len() as u64 > Self::MAX_OBJ_BYTES {
+            return Err(named(format!(
+                "longer than {} MiB, the most this reads",
+                Self::MAX_OBJ_BYTES >> 20
+            )));
+        }
+        Self::parse_obj(&text, size, color).map_err(named)
+    }
+
+    /// The most [`load_obj`](Self::load_obj) reads of a file: 64 MiB, some
+    /// two million vertices.
+    pub const MAX_OBJ_BYTES: u64 = 64 << 20;
+
+    /// [`load_obj`](Self::load_obj) of OBJ text held in memory.
+    ///
+    /// # Errors
+    ///
+    /// As [`load_obj`](Self::load_obj), without the file's name.
+    ///
+    /// ```
+    /// use rigtform_render::Mesh;
+    /// let mesh = Mesh::parse_obj(b"v 0 0 0\nv 4 0 0\nv 0 2 0\nf 1 2 3\n", 1.0, [1.0; 3]).unwrap();
+    /// assert_eq!(mesh.bounds().0.x, -0.5);
+    /// // An extent of 4e38 overflows f32:
+    /// assert!(Mesh::parse_obj(b"v -2e38 0 0\nv 2e38 0 0\nv 0 1 0\nf 1 2 3\n", 1.0, [1.0; 3]).is_err());
+    /// ```
+    pub fn parse_obj(text: &[u8], size: f32, color: [f32; 3]) -> Result<Self, String> {
+        let text = std::str::from_utf8(text).map_err(|e| format!("not UTF-8 text: {e}"))?;
+        check_face_indices(text)?;
+        let (models, _materials) =
+            tobj::load_obj_buf(&mut text.as_bytes(), &tobj::GPU_LOAD_OPTIONS, |_| {
+                Err(tobj::LoadError::OpenFileFailed)
+            })
+            .map_err(|e| format!("cannot parse: {e}"))?;
         let mut mesh = Self::default();
+        // The parts whose normals are computed, once the mesh is scaled:
+        // their vertices and triangles.
+        let mut computed = Vec::new();
         for model in &models {
             let m = &model.mesh;
             let positions: Vec<Cvec3> = m
@@ -244,61 +297,89 @@ impl Mesh {
                 .chunks_exact(3)
                 .map(|p| Cvec3::new(p[0], p[1], p[2]))
                 .collect();
-            let mut part = Self {
-                normals: if m.normals.len() == m.positions.len() {
-                    m.normals
-                        .chunks_exact(3)
-                        .map(|n| Cvec3::new(n[0], n[1], n[2]).normalize())
-                        .collect()
-                } else {
-                    Vec::new()
-                },
-                colors: vec![color; positions.len()],
-                triangles: m
-                    .indices
-                    .chunks_exact(3)
-                    .map(|t| [t[0], t[1], t[2]])
-                    .collect(),
-                positions,
-            };
-            if part.normals.is_empty() {
-                part.normals = part.face_averaged_normals();
+            let count = positions.len();
+            let triangles: Vec<[u32; 3]> = m
+                .indices
+                .chunks_exact(3)
+                .map(|t| [t[0], t[1], t[2]])
+                .collect();
+            if triangles.iter().flatten().any(|&i| i as usize >= count) {
+                return Err("a face refers to a vertex that is not there".to_string());
             }
-            mesh.append(&part);
+            let has_normals = m.normals.len() == m.positions.len();
+            let normals = if has_normals {
+                m.normals
+                    .chunks_exact(3)
+                    .map(|n| unit_or_up(Cvec3::new(n[0], n[1], n[2])))
+                    .collect()
+            } else {
+                vec![Cvec3::ZERO; count]
+            };
+            let (v0, t0) = (mesh.positions.len(), mesh.triangles.len());
+            mesh.append(&Self {
+                normals,
+                colors: vec![color; count],
+                triangles,
+                positions,
+            });
+            if !has_normals {
+                computed.push((v0..mesh.positions.len(), t0..mesh.triangles.len()));
+            }
         }
         if mesh.triangles.is_empty() {
-            return Err(format!("OBJ file {} holds no triangle", path.display()));
+            return Err("holds no triangle".to_string());
         }
         if !mesh.positions.iter().all(|p| p.is_finite()) {
-            return Err(format!(
-                "OBJ file {} has a non-finite coordinate",
-                path.display()
-            ));
+            return Err("has a non-finite coordinate".to_string());
         }
         let (lo, hi) = mesh.bounds();
         let extent = (hi - lo).to_array().into_iter().fold(0.0f32, f32::max);
         let scale = if extent > 0.0 { size / extent } else { 1.0 };
-        let centre = (lo + hi) * 0.5;
+        // Halves first: lo + hi may overflow where their mean does not.
+        let centre = lo * 0.5 + hi * 0.5;
         for p in &mut mesh.positions {
             *p = (*p - centre) * scale;
+        }
+        if !extent.is_finite() || !mesh.positions.iter().all(|p| p.is_finite()) {
+            return Err(format!(
+                "its extent {extent:e} cannot be centred and scaled to {size} in f32 \
+                 (coordinates too far apart, or too close together)"
+            ));
+        }
+        for (vertices, triangles) in computed {
+            mesh.face_averaged_normals(vertices, triangles);
         }
         Ok(mesh)
     }
 
-    /// Area-weighted vertex normals from the triangles (the cross product of
-    /// two edges is twice the area times the unit normal).
-    pub(crate) fn face_averaged_normals(&self) -> Vec<Cvec3> {
-        let mut normals = vec![Cvec3::ZERO; self.positions.len()];
-        for t in &self.triangles {
-            let [a, b, c] = t.map(|i| self.positions.get(i as usize).copied());
-            if let (Some(a), Some(b), Some(c)) = (a, b, c) {
+    /// Area-weighted vertex normals of the triangles `triangles` (the cross
+    /// product of two edges is twice the area times the unit normal), for
+    /// the `vertices` they use.
+    /// A triangle that names a vertex outside `vertices` adds nothing.
+    fn face_averaged_normals(&mut self, vertices: Range<usize>, triangles: Range<usize>) {
+        let first = vertices.start;
+        let mut sums = vec![Cvec3::ZERO; vertices.len()];
+        for t in self.triangles.get(triangles).unwrap_or_default() {
+            let corners = t.map(|i| self.positions.get(i as usize).copied());
+            let slots = t.map(|i| (i as usize).checked_sub(first).filter(|&k| k < sums.len()));
+            if let ([Some(a), Some(b), Some(c)], [Some(i), Some(j), Some(k)]) = (corners, slots) {
                 let n = (b - a).cross(c - a);
-                for &i in t {
-                    normals[i as usize] += n;
+                for s in [i, j, k] {
+                    sums[s] += n;
                 }
             }
         }
-        normals.into_iter().map(Cvec3::normalize).collect()
+        for (normal, sum) in self.normals[vertices].iter_mut().zip(sums) {
+            *normal = unit_or_up(sum);
+        }
+    }
+
+    /// Area-weighted normals of every vertex, for a mesh read without them
+    /// (a glTF primitive with no NORMAL attribute).
+    pub(crate) fn with_face_averaged_normals(mut self) -> Self {
+        self.normals = vec![Cvec3::Y; self.positions.len()];
+        self.face_averaged_normals(0..self.positions.len(), 0..self.triangles.len());
+        self
     }
 
     /// The corners of the axis-aligned bounding box (zero for no vertex).
@@ -314,6 +395,53 @@ impl Mesh {
             )
         })
     }
+}
+
+/// Refuses the face (`f`) and line (`l`) indices that `tobj` would turn
+/// into an arithmetic overflow (a panic in builds with overflow checks, a
+/// wrapped index without): a relative (negative) index reaching before the
+/// first position, texture coordinate or normal, and an index larger than
+/// the text is long (no file has that many elements). Lines are counted as
+/// `tobj` counts them.
+fn check_face_indices(text: &str) -> Result<(), String> {
+    let mut counts = [0usize; 3];
+    for (number, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => counts[0] += 1,
+            Some("vt") => counts[1] += 1,
+            Some("vn") => counts[2] += 1,
+            Some("f" | "l") => {
+                for word in words {
+                    for (kind, part) in word.split('/').enumerate().take(3) {
+                        let Ok(index) = part.parse::<isize>() else {
+                            continue;
+                        };
+                        let reach = index.unsigned_abs();
+                        let fits = if index < 0 {
+                            reach <= counts[kind]
+                        } else {
+                            reach <= text.len()
+                        };
+                        if !fits {
+                            return Err(format!(
+                                "line {}: index {index} refers to no {}",
+                                number + 1,
+                                ["position", "texture coordinate", "normal"][kind]
+                            ));
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// `v` normalized, or +y where it has no direction (a face without area).
+fn unit_or_up(v: Cvec3) -> Cvec3 {
+    v.try_normalize().unwrap_or(Cvec3::Y)
 }
 
 #[cfg(test)]
@@ -428,6 +556,87 @@ mod tests {
     fn obj_collapsed_to_a_point_stays_finite() {
         let mesh = load_obj_text("point", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n", 1.0).unwrap();
         assert_eq!(mesh.positions, vec![Cvec3::ZERO; 3]);
+        assert!(mesh.normals.iter().all(|n| n.norm() == 1.0), "{mesh:?}");
+    }
+
+    /// Every position and normal finite, every normal of unit length.
+    fn assert_finite(mesh: &Mesh) {
+        assert!(mesh.positions.iter().all(|p| p.is_finite()), "{mesh:?}");
+        assert!(
+            mesh.normals.iter().all(|n| (n.norm() - 1.0).abs() < 1e-5),
+            "{mesh:?}"
+        );
+    }
+
+    #[test]
+    fn obj_whose_centring_or_scaling_overflows_is_refused() {
+        // Finite coordinates whose extent (4e38) or size / extent overflows.
+        for (name, text) in [
+            ("far", "v -2e38 0 0\nv 2e38 0 0\nv 0 1 0\nf 1 2 3\n"),
+            (
+                "max",
+                "v -3.4e38 -3.4e38 0\nv 3.4e38 0 0\nv 0 3.4e38 0\nf 1 2 3\n",
+            ),
+            ("tiny", "v 0 0 0\nv 1e-45 0 0\nv 0 1e-45 0\nf 1 2 3\n"),
+        ] {
+            let err = load_obj_text(name, text, 2.0).unwrap_err();
+            assert!(err.contains("centred and scaled"), "{name}: {err}");
+            assert!(err.contains(&format!("{name}.obj")), "{err}");
+        }
+    }
+
+    #[test]
+    fn obj_with_large_coordinates_gets_finite_normals() {
+        // 1e20 centres and scales, but the raw edges' cross product (1e40)
+        // would overflow: the normals come from the scaled mesh.
+        let text = "v 1e20 0 0\nv 3e20 0 0\nv 1e20 2e20 0\nf 1 2 3\n";
+        let mesh = load_obj_text("large", text, 2.0).unwrap();
+        assert_finite(&mesh);
+        assert_eq!(mesh.normals[0], Cvec3::Z);
+        // Two models, the first with normals from the file, the second
+        // computed: each keeps its own.
+        let text = "o a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1 0 0\nf 1//1 2//1 3//1\n\
+                    o b\nv 0 0 1\nv 0 1 1\nv 1 0 1\nf 4 5 6\n";
+        let mesh = load_obj_text("two", text, 2.0).unwrap();
+        assert_finite(&mesh);
+        assert_eq!(mesh.normals[..3], [Cvec3::X; 3]);
+        assert_eq!(mesh.normals[3..], [-Cvec3::Z; 3]);
+    }
+
+    #[test]
+    fn obj_read_is_bounded() {
+        let err = Mesh::load_obj(Path::new("/dev/zero"), 1.0, [1.0; 3]).unwrap_err();
+        assert!(err.contains("/dev/zero") && err.contains("64 MiB"), "{err}");
+    }
+
+    #[test]
+    fn obj_indices_that_would_overflow_are_refused() {
+        // A normal index far beyond the file, and a relative texture
+        // coordinate index before the first: tobj's index arithmetic
+        // overflowed on both (a panic with overflow checks).
+        for (name, text) in [
+            (
+                "normal",
+                "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//7000000000000000000\n",
+            ),
+            (
+                "texture",
+                "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/-2 2/1 3/1\n",
+            ),
+        ] {
+            let err = load_obj_text(name, text, 1.0).unwrap_err();
+            assert!(err.contains("line 5: index"), "{name}: {err}");
+        }
+        // Relative indices within the file are fine.
+        let mesh =
+            load_obj_text("relative", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n", 1.0).unwrap();
+        assert_eq!(mesh.triangles.len(), 1);
+    }
+
+    #[test]
+    fn obj_face_without_its_vertex_is_refused() {
+        let err = load_obj_text("faces", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", 1.0).unwrap_err();
+        assert!(err.contains("faces.obj"), "{err}");
     }
 
     #[test]

@@ -164,6 +164,110 @@ pub fn write_gif(path: &Path, images: &[Image], sequence: &[(usize, u16)]) -> io
     })
 }
 
+/// The files one run writes into its output folder, as paths relative to
+/// it: the files named in `files`, and in the folder `frames` every file
+/// whose name starts with `frame_` and ends with `.png`. Other files are
+/// the user's and left alone.
+#[derive(Clone, Copy, Debug)]
+pub struct OutputSet<'a> {
+    /// Files directly in the output folder.
+    pub files: &'a [&'a str],
+    /// The folder of numbered frames.
+    pub frames: &'a str,
+}
+
+impl OutputSet<'_> {
+    /// Whether `name`, a file of the folder `frames`, is one of the set's.
+    fn is_frame(name: &str) -> bool {
+        name.starts_with("frame_") && name.ends_with(".png")
+    }
+
+    /// The set's files that exist under `dir`, relative to it.
+    fn existing(&self, dir: &Path) -> io::Result<Vec<PathBuf>> {
+        let mut found: Vec<PathBuf> = self
+            .files
+            .iter()
+            .map(PathBuf::from)
+            .filter(|f| dir.join(f).is_file())
+            .collect();
+        match fs::read_dir(dir.join(self.frames)) {
+            Ok(entries) => {
+                for entry in entries {
+                    let name = entry?.file_name();
+                    if name.to_str().is_some_and(Self::is_frame) {
+                        found.push(Path::new(self.frames).join(name));
+                    }
+                }
+            }
+            Err(e) if e.kind() == io::ErrorKind::NotFound => {}
+            Err(e) => return Err(e),
+        }
+        found.sort();
+        Ok(found)
+    }
+}
+
+/// Writes a whole set of outputs into `dir` (created if missing), or
+/// nothing: `write` writes the new set into a hidden staging folder inside
+/// `dir`; only once it succeeded are the old set's files removed and the
+/// new ones renamed into place. If `write` fails, the staging folder is
+/// removed and `dir` keeps the old set untouched, so a folder never holds
+/// files of two runs side by side.
+///
+/// # Errors
+///
+/// `write`'s error, or a message naming the path that could not be
+/// created, removed or renamed.
+///
+/// ```
+/// use rigtform_render::output::{replace_outputs, OutputSet};
+/// let dir = std::env::temp_dir().join(format!("rigtform-doc-set-{}", std::process::id()));
+/// let set = OutputSet { files: &["sheet.txt"], frames: "frames" };
+/// replace_outputs(&dir, set, |stage| {
+///     std::fs::write(stage.join("sheet.txt"), "new").map_err(|e| e.to_string())
+/// })
+/// .unwrap();
+/// let failed = replace_outputs(&dir, set, |stage| {
+///     std::fs::write(stage.join("sheet.txt"), "newer").map_err(|e| e.to_string())?;
+///     Err("out of disk".to_string())
+/// });
+/// assert_eq!(failed.unwrap_err(), "out of disk");
+/// assert_eq!(std::fs::read_to_string(dir.join("sheet.txt")).unwrap(), "new");
+/// std::fs::remove_dir_all(&dir).unwrap();
+/// ```
+pub fn replace_outputs(
+    dir: &Path,
+    set: OutputSet<'_>,
+    write: impl FnOnce(&Path) -> Result<(), String>,
+) -> Result<(), String> {
+    let stage = dir.join(format!(".rigtform-render-{}", std::process::id()));
+    let created = fs::create_dir_all(stage.join(set.frames));
+    created.map_err(|e| format!("cannot create {}: {e}", stage.display()))?;
+    let result = write(&stage).and_then(|()| {
+        let new = set
+            .existing(&stage)
+            .map_err(|e| format!("cannot list {}: {e}", stage.display()))?;
+        let old = set
+            .existing(dir)
+            .map_err(|e| format!("cannot list {}: {e}", dir.display()))?;
+        for f in &old {
+            let path = dir.join(f);
+            fs::remove_file(&path).map_err(|e| format!("cannot remove {}: {e}", path.display()))?;
+        }
+        fs::create_dir_all(dir.join(set.frames))
+            .map_err(|e| format!("cannot create {}: {e}", dir.join(set.frames).display()))?;
+        for f in &new {
+            let to = dir.join(f);
+            fs::rename(stage.join(f), &to)
+                .map_err(|e| format!("cannot move {} into place: {e}", to.display()))?;
+        }
+        Ok(())
+    });
+    // Empty after a success; what a failure left is of no use.
+    let _ = fs::remove_dir_all(&stage);
+    result
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -208,6 +312,67 @@ mod tests {
         let path = Path::new("/nonexistent-rigtform-dir/c.png");
         let err = write_png(path, &Image::new(1, 1, [0; 3])).unwrap_err();
         assert!(err.to_string().contains("c.png"));
+    }
+
+    #[test]
+    fn failed_run_leaves_the_old_set_and_a_good_run_replaces_it_whole() {
+        let dir = scratch("set");
+        let set = OutputSet {
+            files: &["sheet.png", "anim.gif"],
+            frames: "frames",
+        };
+        let write = |names: &'static [&'static str], fail: bool| {
+            move |stage: &Path| {
+                for name in names {
+                    fs::write(stage.join(name), "new").map_err(|e| e.to_string())?;
+                }
+                if fail {
+                    Err("encoder failed".to_string())
+                } else {
+                    Ok(())
+                }
+            }
+        };
+        let old: &[&str] = &[
+            "anim.gif",
+            "frames/frame_000.png",
+            "frames/frame_001.png",
+            "frames/frame_002.png",
+            "sheet.png",
+        ];
+        replace_outputs(&dir, set, write(old, false)).unwrap();
+        fs::write(dir.join("frames/mine.png"), "mine").unwrap();
+        fs::write(dir.join("notes.txt"), "mine").unwrap();
+        let listing = || {
+            let mut all: Vec<String> = ["", "frames"]
+                .iter()
+                .flat_map(|sub| fs::read_dir(dir.join(sub)).unwrap())
+                .map(|e| e.unwrap().path())
+                .filter(|p| p.is_file())
+                .map(|p| p.strip_prefix(&dir).unwrap().display().to_string())
+                .collect();
+            all.sort();
+            all
+        };
+        let before = listing();
+        // A run that fails after writing part of its set changes nothing.
+        let partial: &[&str] = &["frames/frame_000.png", "sheet.png"];
+        let err = replace_outputs(&dir, set, write(partial, true)).unwrap_err();
+        assert_eq!(err, "encoder failed");
+        assert_eq!(listing(), before);
+        assert_eq!(fs::read_to_string(dir.join("sheet.png")).unwrap(), "new");
+        // A shorter run without the GIF leaves exactly its own files.
+        replace_outputs(&dir, set, write(partial, false)).unwrap();
+        assert_eq!(
+            listing(),
+            [
+                "frames/frame_000.png",
+                "frames/mine.png",
+                "notes.txt",
+                "sheet.png"
+            ]
+        );
+        fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

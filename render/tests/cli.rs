@@ -72,12 +72,12 @@ fn demo_writes_frames_gif_and_contact_sheet() {
     assert_eq!(frame.width(), 5 * 40 + 4 * 4);
     assert_eq!(frame.height(), 30 + rigtform_render::demo::LABEL_BAR);
     // A shorter run into the same folder leaves no stale frames behind,
-    // and leaves other files alone.
+    // nor the GIF of the earlier run, and leaves other files alone.
     std::fs::write(dir.join("frames/notes.png"), "mine").unwrap();
     std::fs::write(dir.join("frames/frame_list.txt"), "mine").unwrap();
     let o = run(&dir, "--size 40x30 --frames 2 --sheet-rows 2 --no-gif", &[]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let mut expected = expected[..4].to_vec();
+    let mut expected = expected[1..4].to_vec();
     expected.extend([
         "frames/frame_list.txt".to_string(),
         "frames/notes.png".to_string(),
@@ -226,4 +226,74 @@ fn spline_comparison_writes_two_panels_and_the_speed_plot() {
     // It picks its own panels: a comparison as well is refused.
     let o = run(&scratch("spline-both"), "--spline --comparison slerp", &[]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+}
+
+#[test]
+fn few_frames_work_with_the_default_sheet() {
+    for frames in 2..=4 {
+        let dir = scratch(&format!("few-{frames}"));
+        let o = run(
+            &dir,
+            &format!("--size 32x24 --frames {frames} --no-gif"),
+            &[],
+        );
+        assert!(o.status.success(), "--frames {frames}: {}", stderr(&o));
+        let sheet = read_png(&dir.join("contact_sheet.png")).unwrap();
+        // One row per frame: the panel height and the label bar, and a gap.
+        let row = 24 + rigtform_render::demo::LABEL_BAR + 4;
+        assert_eq!(sheet.height(), frames * row, "--frames {frames}");
+    }
+}
+
+#[test]
+fn settings_that_need_too_much_memory_are_refused_before_rendering() {
+    let dir = scratch("memory");
+    let o = run(&dir, "--size 4096x4096 --frames 1000", &[]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(err.contains("--memory-limit 4096 MiB"), "{err}");
+    assert!(
+        err.contains("--size 4096x4096 with --frames 1000 needs about"),
+        "{err}"
+    );
+    // Two frames at 4096x4096 with every panel: each frame 20496 x 4120,
+    // 253 MB, and a 4x multisampled framebuffer of 1 GiB per thread.
+    let o = run(
+        &dir,
+        "--size 4096x4096 --frames 2 --threads 2 --memory-limit 2048",
+        &[],
+    );
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(!dir.exists(), "nothing written");
+    // A raised limit lets a small run through, a low one refuses it.
+    let o = run(
+        &dir,
+        "--size 64x48 --frames 2 --no-gif --memory-limit 64",
+        &[],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = run(
+        &dir,
+        "--size 4096x4096 --frames 2 --no-gif --msaa 1 --threads 1 --memory-limit 64",
+        &[],
+    );
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+}
+
+#[test]
+fn endless_obj_is_refused() {
+    let dir = scratch("dev-zero");
+    let o = run(&dir, "--obj", &[Path::new("/dev/zero")]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("/dev/zero"), "{}", stderr(&o));
+    assert!(!dir.exists());
+}
+
+#[test]
+fn obj_too_large_to_centre_is_refused() {
+    let (obj, out) = obj_file("huge", "v -2e38 0 0\nv 2e38 0 0\nv 0 1 0\nf 1 2 3\n");
+    let o = run(&out, "--frames 2 --obj", &[&obj]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("huge.obj"), "{}", stderr(&o));
+    assert!(!out.exists());
 }

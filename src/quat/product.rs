@@ -121,7 +121,9 @@ mod tests {
             1 => f32::from_bits(rng.random()),
             _ => rng.random_range(-1.0f32..1.0),
         };
-        for _ in 0..200_000 {
+        // Fewer draws under Miri, which interprets every instruction.
+        let draws = if cfg!(miri) { 500 } else { 200_000 };
+        for _ in 0..draws {
             let mut q = || {
                 Quat::from_wxyz(
                     component(&mut rng),

@@ -78,6 +78,10 @@ impl Isa for Avx {
         unsafe { _mm256_mul_ps(a, b) }
     }
     #[inline(always)]
+    fn max(a: __m256, b: __m256) -> __m256 {
+        unsafe { core::arch::x86_64::_mm256_max_ps(a, b) }
+    }
+    #[inline(always)]
     fn and(a: __m256, b: __m256) -> __m256 {
         unsafe { _mm256_and_ps(a, b) }
     }

@@ -52,6 +52,10 @@ impl Isa for Sse2 {
         unsafe { _mm_mul_ps(a, b) }
     }
     #[inline(always)]
+    fn max(a: __m128, b: __m128) -> __m128 {
+        unsafe { core::arch::x86_64::_mm_max_ps(a, b) }
+    }
+    #[inline(always)]
     fn and(a: __m128, b: __m128) -> __m128 {
         unsafe { _mm_and_ps(a, b) }
     }

@@ -77,8 +77,11 @@ pub fn read(path: &Path) -> Result<Recording, String> {
     parse(&text).map_err(|e| format!("{}: {e}", path.display()))
 }
 
-/// Parses the text of a recording.
+/// Parses the text of a recording: a header row, then one row per sample.
+/// A UTF-8 byte-order mark before the header and blank lines are skipped
+/// (as `tools/vqf_broad.py` skips them).
 pub fn parse(text: &str) -> Result<Recording, String> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text.lines().enumerate();
     let header = lines.next().map(|(_, l)| l.trim_end()).unwrap_or_default();
     let rows = lines.filter(|(_, l)| !l.trim().is_empty());
@@ -180,5 +183,21 @@ mod tests {
         assert!(
             matches!(parse(&format!("{header}\n{good}\n")), Ok(Recording::Broad(s)) if s.len() == 1)
         );
+    }
+
+    #[test]
+    fn byte_order_mark_and_blank_lines_are_skipped() {
+        let header = BROAD_HEADER;
+        let good = "0.1,0,0,0,0,9.81,0,16,-41,1,0,0,0,1";
+        for text in [
+            format!("\u{feff}{header}\n{good}\n{good}\n"),
+            format!("{header}\r\n\r\n{good}\r\n  \r\n{good}\r\n\r\n"),
+        ] {
+            match parse(&text) {
+                Ok(Recording::Broad(s)) => assert_eq!(s.len(), 2, "{text:?}"),
+                Ok(Recording::Fusion(_)) => panic!("{text:?} read as a Fusion log"),
+                Err(e) => panic!("{text:?}: {e}"),
+            }
+        }
     }
 }

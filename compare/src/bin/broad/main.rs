@@ -16,7 +16,7 @@
 mod plot;
 mod vqf;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::Parser;
@@ -38,6 +38,11 @@ struct Args {
     /// The Python interpreter that runs VQF (it needs the `vqf` package).
     #[arg(long, default_value = "python3")]
     python: String,
+    /// The script that runs VQF, `tools/vqf_broad.py` of the repository
+    /// (default: the file `RIGTFORM_VQF_SCRIPT` names, else `vqf_broad.py`
+    /// next to the binary, else `tools/vqf_broad.py` in a folder above it).
+    #[arg(long)]
+    vqf_script: Option<PathBuf>,
 }
 
 /// Published RMSEs in degrees on a BROAD trial: Madgwick and Mahony with
@@ -110,18 +115,42 @@ fn evaluate(args: &Args) -> Result<(), String> {
         }
     }
     let params = FilterParams::DEFAULT;
+    let script = if trials.is_empty() {
+        None
+    } else {
+        Some(vqf::find_script(args.vqf_script.as_deref())?)
+    };
     let trials: Vec<Trial> = trials
         .into_iter()
         .map(|(name, path, samples)| {
-            let (vqf_six, vqf_nine) = vqf::run(&args.python, path, &samples)?;
-            Ok(Trial {
-                six: metric::run(&samples, params, false),
-                nine: metric::run(&samples, params, true),
+            let six = metric::run(&samples, params, false);
+            if six.rmse.samples == 0 {
+                return Err(format!(
+                    "{}: no sample is scored (none is in the movement phase with ground truth)",
+                    path.display()
+                ));
+            }
+            let nine = metric::run(&samples, params, true);
+            let script = script.as_deref().unwrap_or(Path::new(""));
+            let (vqf_six, vqf_nine) = vqf::run(&args.python, script, path, &samples)?;
+            let trial = Trial {
+                six,
+                nine,
                 vqf_six,
                 vqf_nine,
                 name,
                 samples,
-            })
+            };
+            let runs = [&trial.six, &trial.nine, &trial.vqf_six, &trial.vqf_nine];
+            if let Some(run) = runs.iter().find(|r| !rmse_is_finite(r.rmse)) {
+                let bad = run.estimates.iter().filter(|q| !q.is_finite()).count();
+                return Err(format!(
+                    "{}: an RMSE is not finite ({:?}; {bad} non-finite estimates), no verdict",
+                    path.display(),
+                    run.rmse
+                ));
+            }
+            Ok(trial)
         })
         .collect::<Result<_, String>>()?;
     if !trials.is_empty() {
@@ -138,6 +167,13 @@ fn evaluate(args: &Args) -> Result<(), String> {
         println!("\nplot written to {}", path.display());
     }
     Ok(())
+}
+
+/// Whether every error of `rmse` is a number (not NaN, not infinite).
+fn rmse_is_finite(rmse: Rmse) -> bool {
+    [rmse.inclination, rmse.heading, rmse.total]
+        .iter()
+        .all(|e| e.is_finite())
 }
 
 /// The two digits after `broad_` in a file name: the BROAD trial number.

@@ -2,27 +2,75 @@
 //! BROAD authors' VQF (the `vqf` package from PyPI) on the same CSV and
 //! prints its estimates, which the binary scores with the same metric.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use rigtform::Quat;
 use rigtform_testkit::broad::data::BroadSample;
 use rigtform_testkit::broad::metric::{self, Run};
 
-/// The script, beside the workspace's other tools.
-const SCRIPT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tools/vqf_broad.py");
+/// The script's file name.
+const SCRIPT: &str = "vqf_broad.py";
+
+/// The environment variable that names the script.
+pub const SCRIPT_VAR: &str = "RIGTFORM_VQF_SCRIPT";
+
+/// Where the script is, found at run time: `given` (the `--vqf-script`
+/// flag), else the file [`SCRIPT_VAR`] names, else `vqf_broad.py` next to
+/// the binary, else `tools/vqf_broad.py` in the folder of the binary or
+/// one above it (the repository, for a binary under `target/`).
+pub fn find_script(given: Option<&Path>) -> Result<PathBuf, String> {
+    if let Some(path) = given {
+        return existing(path.to_path_buf(), "--vqf-script");
+    }
+    if let Some(path) = std::env::var_os(SCRIPT_VAR) {
+        return existing(PathBuf::from(path), SCRIPT_VAR);
+    }
+    let exe = std::env::current_exe().map_err(|e| format!("cannot locate the binary: {e}"))?;
+    let dir = exe.parent().unwrap_or(Path::new("."));
+    let candidates: Vec<PathBuf> = std::iter::once(dir.join(SCRIPT))
+        .chain(dir.ancestors().map(|d| d.join("tools").join(SCRIPT)))
+        .collect();
+    candidates.into_iter().find(|p| p.is_file()).ok_or_else(|| {
+        format!(
+            "cannot find {SCRIPT}, which runs VQF: put it next to the binary ({}), \
+             or name it with --vqf-script PATH or {SCRIPT_VAR}=PATH \
+             (it is tools/{SCRIPT} in the rigtform repository)",
+            dir.join(SCRIPT).display()
+        )
+    })
+}
+
+/// `path` if it is a file; else an error naming `source`.
+fn existing(path: PathBuf, source: &str) -> Result<PathBuf, String> {
+    if path.is_file() {
+        Ok(path)
+    } else {
+        Err(format!(
+            "{source}: {} is not a file (it should be tools/{SCRIPT} of the rigtform repository)",
+            path.display()
+        ))
+    }
+}
 
 /// VQF's 6D and 9D runs over the trial at `path`, scored against `samples`
-/// (read from the same file). `python` is the interpreter that has `vqf`.
-pub fn run(python: &str, path: &Path, samples: &[BroadSample]) -> Result<(Run, Run), String> {
+/// (read from the same file). `python` is the interpreter that has `vqf`;
+/// `script` is `tools/vqf_broad.py` ([`find_script`]).
+pub fn run(
+    python: &str,
+    script: &Path,
+    path: &Path,
+    samples: &[BroadSample],
+) -> Result<(Run, Run), String> {
+    let shown = script.display();
     let output = Command::new(python)
-        .arg(SCRIPT)
+        .arg(script)
         .arg(path)
         .output()
-        .map_err(|e| format!("{python} {SCRIPT}: {e}"))?;
+        .map_err(|e| format!("{python} {shown}: {e}"))?;
     if !output.status.success() {
         return Err(format!(
-            "{python} {SCRIPT} {}: {}\n(VQF comes from PyPI: `{python} -m pip install vqf`)",
+            "{python} {shown} {}: {}\n(VQF comes from PyPI: `{python} -m pip install vqf`)",
             path.display(),
             String::from_utf8_lossy(&output.stderr).trim()
         ));
