@@ -196,65 +196,73 @@ pub fn check_all(t: &mut Tally, draws: u32) {
             within("outputs and magnet", error.into(), bound.into(), 6)
         },
     );
-    t.check("filter_skips_each_bad_sample_and_corrects_again_at_once", || {
-        // Still at a tilt and heading, resting: one bad sample, then a
-        // clean one. The bad one is flagged, the state stays a unit
-        // attitude, and the next sample is corrected by both sensors as in
-        // a clean copy's run: within 5e-4 rad of it (the skipped sample's
-        // share of the corrections; 1.1e-4 measured).
-        let truth = Quat::from_rotation_z(0.7) * Quat::from_rotation_x(0.3);
-        let (g, field) = (Cvec3::new(0.0, 0.0, 9.81), Cvec3::new(0.0, 16.0, -41.0));
-        let (acc, mag) = (truth.inv() * g, truth.inv() * field);
-        let gyr = Cvec3::new(0.01, -0.02, 0.005);
-        let mut f = OrientationFilter::new(FilterParams::DEFAULT);
-        for _ in 0..500 {
-            f.update_with_mag(gyr, acc, mag, 0.01);
-        }
-        let big = |v: f32| Cvec3::new(v, -v, v);
-        let nan = Cvec3::NAN;
-        // (gyro, accelerometer, magnetometer, dt, which flag: 0 gyro, 1 acc, 2 mag)
-        let glitches = [
-            (nan, acc, mag, 0.01, 0),
-            (big(f32::INFINITY), acc, mag, 0.01, 0),
-            (big(3.4e38), acc, mag, 0.01, 0),
-            (big(1e30), acc, mag, 0.01, 0),
-            (gyr, acc, mag, f32::NAN, 0),
-            (gyr, acc, mag, f32::INFINITY, 0),
-            (gyr, acc, mag, 1e30, 0),
-            (gyr, nan, mag, 0.01, 1),
-            (gyr, big(f32::INFINITY), mag, 0.01, 1),
-            (gyr, big(3.4e38), mag, 0.01, 1),
-            (gyr, big(1e30), mag, 0.01, 1),
-            (gyr, Cvec3::ZERO, mag, 0.01, 1),
-            (gyr, acc, nan, 0.01, 2),
-            (gyr, acc, big(f32::INFINITY), 0.01, 2),
-            (gyr, acc, big(3.4e38), 0.01, 2),
-            (gyr, acc, big(1e30), 0.01, 2),
-            (gyr, acc, big(1e6), 0.01, 2),
-            (gyr, acc, big(32767.0), 0.01, 2),
-            (gyr, acc, Cvec3::ZERO, 0.01, 2),
-            (gyr, acc, -mag, 0.01, 2),
-        ];
-        let mut worst: f32 = 0.0;
-        let mut failed = false;
-        for (bad_gyr, bad_acc, bad_mag, dt, flag) in glitches {
-            let mut glitched = f;
-            let mut clean = f;
-            glitched.update_with_mag(bad_gyr, bad_acc, bad_mag, dt);
-            let d = glitched.diagnostics();
-            failed |= ![d.gyro_ignored, d.acc_ignored, d.mag_ignored][flag];
-            let q = glitched.attitude();
-            failed |= !(q.is_finite() && libm::fabsf(q.norm() - 1.0) < 1e-5);
-            clean.update_with_mag(gyr, acc, mag, 0.01);
-            glitched.update_with_mag(gyr, acc, mag, 0.01);
-            clean.update_with_mag(gyr, acc, mag, 0.01);
-            let d = glitched.diagnostics();
-            failed |= d.gyro_ignored || d.acc_ignored || d.mag_ignored;
-            worst = worst.max(glitched.attitude().angle_to(clean.attitude()));
-        }
-        let error = if failed { 1.0 } else { worst };
-        within("bad sample skipped", error.into(), 5e-4, glitches.len() as u32)
-    });
+    t.check(
+        "filter_skips_each_bad_sample_and_corrects_again_at_once",
+        || {
+            // Still at a tilt and heading, resting: one bad sample, then a
+            // clean one. The bad one is flagged, the state stays a unit
+            // attitude, and the next sample is corrected by both sensors as in
+            // a clean copy's run: within 5e-4 rad of it (the skipped sample's
+            // share of the corrections; 1.1e-4 measured).
+            let truth = Quat::from_rotation_z(0.7) * Quat::from_rotation_x(0.3);
+            let (g, field) = (Cvec3::new(0.0, 0.0, 9.81), Cvec3::new(0.0, 16.0, -41.0));
+            let (acc, mag) = (truth.inv() * g, truth.inv() * field);
+            let gyr = Cvec3::new(0.01, -0.02, 0.005);
+            let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+            for _ in 0..500 {
+                f.update_with_mag(gyr, acc, mag, 0.01);
+            }
+            let big = |v: f32| Cvec3::new(v, -v, v);
+            let nan = Cvec3::NAN;
+            // (gyro, accelerometer, magnetometer, dt, which flag: 0 gyro, 1 acc, 2 mag)
+            let glitches = [
+                (nan, acc, mag, 0.01, 0),
+                (big(f32::INFINITY), acc, mag, 0.01, 0),
+                (big(3.4e38), acc, mag, 0.01, 0),
+                (big(1e30), acc, mag, 0.01, 0),
+                (gyr, acc, mag, f32::NAN, 0),
+                (gyr, acc, mag, f32::INFINITY, 0),
+                (gyr, acc, mag, 1e30, 0),
+                (gyr, nan, mag, 0.01, 1),
+                (gyr, big(f32::INFINITY), mag, 0.01, 1),
+                (gyr, big(3.4e38), mag, 0.01, 1),
+                (gyr, big(1e30), mag, 0.01, 1),
+                (gyr, Cvec3::ZERO, mag, 0.01, 1),
+                (gyr, acc, nan, 0.01, 2),
+                (gyr, acc, big(f32::INFINITY), 0.01, 2),
+                (gyr, acc, big(3.4e38), 0.01, 2),
+                (gyr, acc, big(1e30), 0.01, 2),
+                (gyr, acc, big(1e6), 0.01, 2),
+                (gyr, acc, big(32767.0), 0.01, 2),
+                (gyr, acc, Cvec3::ZERO, 0.01, 2),
+                (gyr, acc, -mag, 0.01, 2),
+            ];
+            let mut worst: f32 = 0.0;
+            let mut failed = false;
+            for (bad_gyr, bad_acc, bad_mag, dt, flag) in glitches {
+                let mut glitched = f;
+                let mut clean = f;
+                glitched.update_with_mag(bad_gyr, bad_acc, bad_mag, dt);
+                let d = glitched.diagnostics();
+                failed |= ![d.gyro_ignored, d.acc_ignored, d.mag_ignored][flag];
+                let q = glitched.attitude();
+                failed |= !(q.is_finite() && libm::fabsf(q.norm() - 1.0) < 1e-5);
+                clean.update_with_mag(gyr, acc, mag, 0.01);
+                glitched.update_with_mag(gyr, acc, mag, 0.01);
+                clean.update_with_mag(gyr, acc, mag, 0.01);
+                let d = glitched.diagnostics();
+                failed |= d.gyro_ignored || d.acc_ignored || d.mag_ignored;
+                worst = worst.max(glitched.attitude().angle_to(clean.attitude()));
+            }
+            let error = if failed { 1.0 } else { worst };
+            within(
+                "bad sample skipped",
+                error.into(),
+                5e-4,
+                glitches.len() as u32,
+            )
+        },
+    );
     t.check("filter_comes_back_after_a_burst_and_bad_setters", || {
         // A second of garbage on every sensor, then 30 s of clean samples;
         // a NaN bias and a NaN starting attitude, ignored; a smoother fed a
@@ -289,7 +297,10 @@ pub fn check_all(t: &mut Tally, draws: u32) {
         }
         let half_turn_y = Quat::from_rotation_y(core::f32::consts::FRAC_PI_2);
         let ok = started_new && bias_kept && s.attitude.is_finite();
-        let error = f.attitude().angle_to(truth).max(s.attitude.angle_to(half_turn_y));
+        let error = f
+            .attitude()
+            .angle_to(truth)
+            .max(s.attitude.angle_to(half_turn_y));
         within(
             "burst and setters",
             if ok { error.into() } else { 1.0 },
