@@ -138,6 +138,32 @@ impl From<Quat> for [f32; 4] {
     }
 }
 
+impl From<Cvec4> for Quat {
+    /// `x, y, z, w` as they are, glam's `Quat::from_vec4`.
+    ///
+    /// ```
+    /// use rigtform::{Cvec4, Quat};
+    /// assert_eq!(Quat::from(Cvec4::new(0.0, 0.0, 0.0, 1.0)), Quat::IDENTITY);
+    /// ```
+    #[inline]
+    fn from(v: Cvec4) -> Self {
+        Self::from_xyzw(v.x, v.y, v.z, v.w)
+    }
+}
+
+impl From<Quat> for Cvec4 {
+    /// `x, y, z, w` as they are, glam's `Vec4::from(Quat)`.
+    ///
+    /// ```
+    /// use rigtform::{Cvec4, Quat};
+    /// assert_eq!(Cvec4::from(Quat::IDENTITY), Cvec4::new(0.0, 0.0, 0.0, 1.0));
+    /// ```
+    #[inline]
+    fn from(q: Quat) -> Self {
+        Cvec4::new(q.x, q.y, q.z, q.w)
+    }
+}
+
 impl From<(f32, f32, f32, f32)> for Quat {
     /// `(x, y, z, w)`, scalar last, as [`Quat::from_xyzw`].
     ///

@@ -9,6 +9,7 @@
 
 use super::Quat;
 use crate::matrix::Matrix4;
+use crate::matrix3::Matrix3;
 use crate::vec::Cvec3;
 
 impl Quat {
@@ -46,6 +47,21 @@ impl Quat {
     pub fn from_matrix(m: Matrix4) -> Self {
         let [a, b, c, _] = m.cols;
         Self::from_basis(a.xyz(), b.xyz(), c.xyz())
+    }
+
+    /// The rotation of a 3x3 rotation matrix (glam's `from_mat3`): as
+    /// [`from_matrix`](Self::from_matrix), with the same preconditions and
+    /// accuracy.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix3, Quat};
+    /// let q = Quat::from_axis_angle(Cvec3::new(1.0, -2.0, 0.5), 2.0);
+    /// assert!(Quat::from_mat3(Matrix3::from_quat(q)).angle_to(q) < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn from_mat3(m: Matrix3) -> Self {
+        let [a, b, c] = m.cols;
+        Self::from_basis(a, b, c)
     }
 
     /// The rotation whose matrix has the columns `x`, `y`, `z` (the images
