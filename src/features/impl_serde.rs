@@ -23,7 +23,7 @@
 //! use rigtform::{Cvec3, Quat, RigTForm};
 //! let a = RigTForm::new(Cvec3::new(1.0, 2.0, 3.0), Quat::from_rotation_z(0.5));
 //! let json = serde_json::to_string(&a).unwrap();
-//! assert!(json.starts_with(r#"{"t":{"x":1.0,"y":2.0,"z":3.0},"r":{"w":"#));
+//! assert!(json.starts_with(r#"{"t":{"x":1.0,"y":2.0,"z":3.0},"r":{"x":0.0,"y":0.0,"z":"#));
 //! let b: RigTForm = serde_json::from_str(&json).unwrap();
 //! assert_eq!(a, b);
 //! ```
