@@ -137,6 +137,12 @@ mod vec;
 #[cfg(any(kani, feature = "kernel-contracts"))]
 #[doc(hidden)]
 pub mod kani_kernels {
+    /// slerp's f64 sine, which `proofs/gappa/sin_f64.g` models.
+    #[cfg(all(
+        any(target_arch = "x86_64", target_arch = "aarch64"),
+        not(feature = "fast-math")
+    ))]
+    pub use crate::float::sin_to_quarter_turn;
     pub use crate::float::{atan2, sin_cos, sqrt};
 }
 
