@@ -9,7 +9,7 @@
 # norm |a| |b| = 1, so by the triangle inequality the computed product's
 # norm is within 8.35e-7 of 1.
 #
-#! bound UNIT_NORM_ERROR 8.35e-7 |a*b| - 1 for unit a, b (length of the error vector; triangle inequality)
+#! looser UNIT_NORM_ERROR 8.35e-7 |a*b| - 1 for unit a, b (length of the error vector; triangle inequality)
 @rnd = float<ieee_32, ne>;
 
 aw = rnd(Aw); ax = rnd(Ax); ay = rnd(Ay); az = rnd(Az);

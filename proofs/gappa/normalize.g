@@ -18,7 +18,7 @@
 # The exact quotients (a, b, c, d) / n have norm N / n, so by the triangle
 # inequality the result's norm is within 8.05e-7 of 1.
 #
-#! bound NORMALIZE_MAX_NORM_ERROR 8.05e-7 |normalize(q)| - 1 (error vector of the quotients plus |N/n - 1|; triangle inequality)
+#! looser NORMALIZE_MAX_NORM_ERROR 8.05e-7 |normalize(q)| - 1 (error vector of the quotients plus |N/n - 1|; triangle inequality)
 @rnd = float<ieee_32, ne>;
 
 a = rnd(A); b = rnd(B); c = rnd(C); d = rnd(D);

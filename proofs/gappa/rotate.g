@@ -13,7 +13,7 @@
 # 7.03e-6 |v|. For unit q the formula is the rotation q [0, v] q^-1, which
 # preserves length: the result's length is within 7.03e-6 |v| of |v|.
 #
-#! bound ROTATE_MAX_REL_ERROR 7.03e-6 |q*v - rotation of v| / |v| for unit q
+#! looser ROTATE_MAX_REL_ERROR 7.03e-6 |q*v - rotation of v| / |v| for unit q
 @rnd = float<ieee_32, ne>;
 
 w = rnd(W); x = rnd(X); y = rnd(Y); z = rnd(Z);
