@@ -64,12 +64,11 @@ pub(crate) use bits::SIGN;
     any(target_arch = "x86_64", target_arch = "aarch64"),
     not(feature = "fast-math")
 ))]
-pub(crate) use double::atan2_of_root;
 #[cfg(all(
     any(target_arch = "x86_64", target_arch = "aarch64"),
     not(feature = "fast-math")
 ))]
-pub use double::sin_to_quarter_turn;
+pub use double::{atan2_of_root, sin_to_quarter_turn};
 /// The coefficients the x86-64 lanes of `Quat::slerp_slice` evaluate.
 #[cfg(all(
     target_arch = "x86_64",

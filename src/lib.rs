@@ -137,13 +137,14 @@ mod vec;
 #[cfg(any(kani, feature = "kernel-contracts"))]
 #[doc(hidden)]
 pub mod kani_kernels {
-    /// slerp's f64 sine, which `proofs/gappa/sin_f64.g` models.
+    pub use crate::float::{atan2, sin_cos, sqrt};
+    /// slerp's f64 angle and sine, which `proofs/gappa/angle_f64.g`,
+    /// `angle_f64_above.g` and `sin_f64.g` model.
     #[cfg(all(
         any(target_arch = "x86_64", target_arch = "aarch64"),
         not(feature = "fast-math")
     ))]
-    pub use crate::float::sin_to_quarter_turn;
-    pub use crate::float::{atan2, sin_cos, sqrt};
+    pub use crate::float::{atan2_of_root, sin_to_quarter_turn};
 }
 
 pub use matrix::Matrix4;

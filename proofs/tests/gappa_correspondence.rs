@@ -41,9 +41,29 @@ enum Expr {
 #[derive(Debug)]
 struct Model {
     name: &'static str,
-    single: bool,
     inputs: Vec<String>,
-    defs: Vec<(String, Expr)>,
+    defs: Vec<Def>,
+}
+
+/// A rounded definition: `name fmt= expr` rounds every operation to the
+/// format (`every_op`), `name = fmt(expr)` rounds the exact value of one
+/// operation once.
+#[derive(Debug)]
+struct Def {
+    name: String,
+    expr: Expr,
+    single: bool,
+    every_op: bool,
+}
+
+/// Counts the operations of an expression (negation is exact, not one).
+fn operations(e: &Expr) -> usize {
+    match e {
+        Expr::Num(_) | Expr::Var(_) => 0,
+        Expr::Neg(a) => operations(a),
+        Expr::Sqrt(a) => 1 + operations(a),
+        Expr::Bin(_, a, b) => 1 + operations(a) + operations(b),
+    }
 }
 
 fn tokens(s: &str) -> Vec<String> {
@@ -182,83 +202,96 @@ fn parse(name: &'static str, text: &str) -> Model {
     let body = body.split('{').next().unwrap_or("");
     let mut model = Model {
         name,
-        single: true,
         inputs: Vec::new(),
         defs: Vec::new(),
     };
-    let mut format = None;
+    // Format name -> whether it is f32 (else f64).
+    let mut formats: BTreeMap<String, bool> = BTreeMap::new();
+    let expression = |s: &str| {
+        let mut p = Parser { t: tokens(s), i: 0 };
+        let e = p.expr();
+        assert_eq!(p.i, p.t.len(), "{name}: trailing tokens in {s}");
+        e
+    };
     for statement in body.split(';').map(str::trim).filter(|s| !s.is_empty()) {
-        if let Some(rest) = statement.strip_prefix("@rnd") {
-            format = Some(rest.contains("ieee_32"));
+        if let Some(rest) = statement.strip_prefix('@') {
+            let (format, kind) = rest
+                .split_once('=')
+                .unwrap_or_else(|| panic!("{name}: {rest}"));
             assert!(
-                rest.contains("ieee_32") || rest.contains("ieee_64"),
+                kind.contains("ieee_32") || kind.contains("ieee_64"),
                 "{name}: {rest}"
             );
-            assert!(rest.contains("ne>"), "{name}: only round to nearest even");
-            continue;
-        }
-        if let Some((lhs, rhs)) = statement.split_once("rnd=") {
-            let mut p = Parser {
-                t: tokens(rhs),
-                i: 0,
-            };
-            let e = p.expr();
-            assert_eq!(p.i, p.t.len(), "{name}: trailing tokens in {statement}");
-            model.defs.push((lhs.trim().to_string(), e));
+            assert!(kind.contains("ne>"), "{name}: only round to nearest even");
+            formats.insert(format.trim().to_string(), kind.contains("ieee_32"));
             continue;
         }
         let (lhs, rhs) = statement
             .split_once('=')
             .unwrap_or_else(|| panic!("{name}: {statement}"));
-        let (lhs, rhs) = (lhs.trim().to_string(), rhs.trim());
-        if let Some(inner) = rhs.strip_prefix("rnd(").and_then(|r| r.strip_suffix(')')) {
-            let mut p = Parser {
-                t: tokens(inner),
-                i: 0,
-            };
-            let e = p.expr();
-            assert_eq!(p.i, p.t.len(), "{name}: trailing tokens in {statement}");
-            match e {
+        let lhs: Vec<&str> = lhs.split_whitespace().collect();
+        if let [var, format] = lhs[..] {
+            let single = *formats
+                .get(format)
+                .unwrap_or_else(|| panic!("{name}: format {format}"));
+            model.defs.push(Def {
+                name: var.to_string(),
+                expr: expression(rhs),
+                single,
+                every_op: true,
+            });
+            continue;
+        }
+        let [var] = lhs[..] else {
+            panic!("{name}: {statement}")
+        };
+        let rhs = rhs.trim();
+        let rounded = rhs.split_once('(').and_then(|(f, inner)| {
+            let single = formats.get(f.trim())?;
+            Some((*single, inner.strip_suffix(')')?))
+        });
+        if let Some((single, inner)) = rounded {
+            match expression(inner) {
                 Expr::Var(v) if v.starts_with(|c: char| c.is_ascii_uppercase()) => {
-                    model.inputs.push(lhs)
+                    model.inputs.push(var.to_string())
                 }
-                e => model.defs.push((lhs, e)),
+                e => {
+                    assert!(
+                        operations(&e) <= 1,
+                        "{name}: {var} rounds more than one operation once"
+                    );
+                    model.defs.push(Def {
+                        name: var.to_string(),
+                        expr: e,
+                        single,
+                        every_op: false,
+                    });
+                }
             }
         }
         // Anything else is an exact definition: the proofs' reference.
     }
-    model.single = format.unwrap_or_else(|| panic!("{name}: no @rnd format"));
+    assert!(!formats.is_empty(), "{name}: no format");
     model
 }
 
 impl Model {
-    fn round(&self, x: f64) -> f64 {
-        if self.single {
-            x as f32 as f64
-        } else {
-            x
-        }
-    }
-
-    fn eval(&self, e: &Expr, env: &BTreeMap<String, f64>) -> f64 {
+    /// `e` with every operation rounded to f32 (`single`) or f64.
+    fn eval(&self, e: &Expr, env: &BTreeMap<String, f64>, single: bool) -> f64 {
+        let round = |x: f64| if single { x as f32 as f64 } else { x };
         match e {
             Expr::Num(v) => {
-                assert_eq!(
-                    self.round(*v),
-                    *v,
-                    "{}: {v} is not in the format",
-                    self.name
-                );
+                assert_eq!(round(*v), *v, "{}: {v} is not in the format", self.name);
                 *v
             }
             Expr::Var(v) => *env
                 .get(v)
                 .unwrap_or_else(|| panic!("{}: {v} undefined", self.name)),
-            Expr::Neg(a) => -self.eval(a, env),
-            Expr::Sqrt(a) => self.round(self.eval(a, env).sqrt()),
+            Expr::Neg(a) => -self.eval(a, env, single),
+            Expr::Sqrt(a) => round(self.eval(a, env, single).sqrt()),
             Expr::Bin(op, a, b) => {
-                let (a, b) = (self.eval(a, env), self.eval(b, env));
-                self.round(match op {
+                let (a, b) = (self.eval(a, env, single), self.eval(b, env, single));
+                round(match op {
                     '+' => a + b,
                     '-' => a - b,
                     '*' => a * b,
@@ -278,9 +311,20 @@ impl Model {
             .cloned()
             .zip(inputs.iter().copied())
             .collect();
-        for (name, e) in &self.defs {
-            let v = self.eval(e, &env);
-            env.insert(name.clone(), v);
+        for d in &self.defs {
+            let v = if d.every_op {
+                self.eval(&d.expr, &env, d.single)
+            } else {
+                // One operation, exact to f64's rounding, then rounded to
+                // the format: the correctly rounded result.
+                let v = self.eval(&d.expr, &env, false);
+                if d.single {
+                    v as f32 as f64
+                } else {
+                    v
+                }
+            };
+            env.insert(d.name.clone(), v);
         }
         env
     }
@@ -487,7 +531,6 @@ fn square_root_is_sqrt_g() {
 fn f64_sine_is_sin_f64_g() {
     let m = model("sin_f64");
     assert_eq!(m.inputs, ["x"]);
-    assert!(!m.single);
     let mut d = Draws::new(11);
     for i in 0..DRAWS {
         // f32 arguments (as slerp's sweep) and f64 ones (as slerp computes).
@@ -505,6 +548,54 @@ fn f64_sine_is_sin_f64_g() {
     }
 }
 
+/// angle_f64.g where the code takes its first branch (`w < x x`, and
+/// `w = x x`, where both branches compute z = 1 and the result is `a`),
+/// angle_f64_above.g where it takes the second (`w > x x`).
+#[cfg(all(
+    any(target_arch = "x86_64", target_arch = "aarch64"),
+    not(feature = "fast-math")
+))]
+#[test]
+fn f64_angle_is_angle_f64_g_in_each_branch() {
+    let below = model("angle_f64");
+    let above = model("angle_f64_above");
+    assert_eq!(below.inputs, ["w", "x"]);
+    assert_eq!(above.inputs, ["w", "x"]);
+    let mut d = Draws::new(13);
+    let mut branches = [0usize; 2];
+    for i in 0..DRAWS {
+        let t = f64::from(d.uniform(0.0, 1.0));
+        // The constant's pairs (t, 1) and (1, t), and f64 pairs at every scale.
+        let (w, x) = match i % 3 {
+            0 => (t, 1.0),
+            1 => (1.0, t),
+            _ => {
+                let w = f64::from_bits(d.next_u64() >> 2);
+                let x = f64::from_bits(d.next_u64() >> 2);
+                (w, x)
+            }
+        };
+        let code = kani_kernels::atan2_of_root(w, x);
+        let (m, out) = if w > x * x {
+            branches[1] += 1;
+            (&above, "res")
+        } else {
+            branches[0] += 1;
+            (&below, "a")
+        };
+        let model = m.run(&[w, x])[out];
+        assert!(
+            model.to_bits() == code.to_bits() || (model.is_nan() && code.is_nan()),
+            "{}: {model:e} in the model, {code:e} in the code, at ({w:e}, {x:e})",
+            m.name
+        );
+    }
+    assert!(
+        branches.iter().all(|&b| b > 1000),
+        "branches drawn: {branches:?}"
+    );
+}
+
 /// The evaluator itself: its notations and its rounding.
 #[test]
 fn evaluator_reads_the_notations_and_rounds_each_operation() {
@@ -518,6 +609,7 @@ fn evaluator_reads_the_notations_and_rounds_each_operation() {
     );
     assert_eq!(m.inputs, ["a", "b"]);
     assert_eq!(m.defs.len(), 1);
+    assert!(m.defs[0].single && m.defs[0].every_op);
     // (1 + 2^-30) - 1 rounds the sum to 1 in f32 first: 0, not 2^-30.
     assert_eq!(m.run(&[1.0, 2f64.powi(-30)])["s"], 0.0);
     let m = parse(

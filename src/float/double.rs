@@ -60,7 +60,7 @@ const SIGN: u64 = 0x8000_0000_0000_0000;
 /// the polynomial's 1.7e-8 and the f64 rounding.
 #[inline(always)]
 #[must_use]
-pub(crate) fn atan2_of_root(w: f64, x: f64) -> f64 {
+pub fn atan2_of_root(w: f64, x: f64) -> f64 {
     let x2 = x * x;
     // Comparisons rather than `min` and `max`, whose NaN rules cost
     // instructions (neither is NaN here).

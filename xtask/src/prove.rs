@@ -12,7 +12,9 @@
 //! A model says what it proves in `#!` lines:
 //!
 //! - `#! bound NAME VALUE what`: the constant `NAME` of `src/accuracy.rs`,
-//!   over its whole domain, is at most `VALUE`;
+//!   over its whole domain, or over the part of it that this model's
+//!   branch of the code takes, is at most `VALUE` (with several models,
+//!   the constant's proven bound is the largest of theirs);
 //! - `#! looser NAME VALUE what`: the quantity `NAME` bounds, on part of
 //!   its domain or for one of its operations, is at most `VALUE`, which
 //!   is above the constant (the constant is then only measured);
@@ -174,11 +176,13 @@ fn prove(path: &Path, work: &Path) -> Result<Proven> {
         .context("could not run gappa (Debian: apt-get install gappa)")?;
     let messages = String::from_utf8_lossy(&gappa.stderr);
     if !gappa.status.success() || messages.contains("Error") {
-        bail!(
-            "gappa did not prove {}:\n{}",
-            path.display(),
-            messages.trim_end()
-        );
+        // Gappa's warnings (iterations, rewritings) before its error are noise here.
+        let error = messages
+            .lines()
+            .skip_while(|l| !l.starts_with("Error"))
+            .collect::<Vec<_>>()
+            .join("\n");
+        bail!("gappa did not prove {}:\n{error}", path.display());
     }
     let script = String::from_utf8(gappa.stdout).context("gappa's certificate")?;
     if script.contains("Admitted") || script.contains("Axiom") {
@@ -292,19 +296,30 @@ pub fn prove_all() -> Result<()> {
     }
 
     say("the correspondence of models and code (cargo test -p rigtform-proofs --test gappa_correspondence)");
-    output(
-        cargo()
-            .args([
-                "test",
-                "-q",
-                "-p",
-                "rigtform-proofs",
-                "--test",
-                "gappa_correspondence",
-            ])
-            .current_dir(&root),
-    )
-    .context("the models and the code no longer compute the same thing")?;
+    let test = cargo()
+        .args([
+            "test",
+            "-q",
+            "-p",
+            "rigtform-proofs",
+            "--test",
+            "gappa_correspondence",
+        ])
+        .current_dir(&root)
+        .output()
+        .context("could not run cargo test")?;
+    if !test.status.success() {
+        let out = String::from_utf8_lossy(&test.stdout);
+        let failures: Vec<_> = out
+            .lines()
+            .filter(|l| l.contains("panicked at") || l.contains(" in the model, "))
+            .collect();
+        bail!(
+            "the models and the code no longer compute the same thing:\n{}\n{}",
+            failures.join("\n"),
+            String::from_utf8_lossy(&test.stderr).trim_end()
+        );
+    }
 
     let accuracy =
         std::fs::read_to_string(root.join("src/accuracy.rs")).context("src/accuracy.rs")?;
@@ -326,7 +341,7 @@ pub fn prove_all() -> Result<()> {
     let (mut p, mut s, mut m) = (0, 0, 0);
     let _ = writeln!(
         table,
-        "{:<38} {:>11} {:>10}  {:<9} {:<19} {:>7}",
+        "{:<38} {:>11} {:>10}  {:<9} {:<28} {:>7}",
         "constant", "proven", "constant", "known", "model", "time"
     );
     for c in &constants {
@@ -334,7 +349,13 @@ pub fn prove_all() -> Result<()> {
             .get(c.name.as_str())
             .map(Vec::as_slice)
             .unwrap_or(&[]);
-        let bound = claims.iter().find(|(_, cl)| cl.kind == "bound");
+        // A constant's domain may be split among models (one per branch of
+        // the code): its proven bound is the largest of theirs.
+        let bounds: Vec<_> = claims.iter().filter(|(_, cl)| cl.kind == "bound").collect();
+        let bound = bounds
+            .iter()
+            .copied()
+            .max_by(|a, b| a.1.value.total_cmp(&b.1.value));
         let looser = claims.iter().find(|(_, cl)| cl.kind == "looser");
         match c.known.as_str() {
             "proven" => {
@@ -368,21 +389,32 @@ pub fn prove_all() -> Result<()> {
                 c.name, c.known
             ));
         }
-        let (proof, model, time) = match bound.or(looser) {
-            Some((pr, cl)) => (
+        let (proof, model, time) = match (bound, looser) {
+            (Some((_, cl)), _) => (
+                format!("{:.3e}", cl.value),
+                bounds
+                    .iter()
+                    .map(|(pr, _)| pr.model.as_str())
+                    .collect::<Vec<_>>()
+                    .join("+"),
                 format!(
-                    "{:.3e}{}",
-                    cl.value,
-                    if cl.kind == "looser" { "*" } else { "" }
+                    "{:.1} s",
+                    bounds
+                        .iter()
+                        .map(|(pr, _)| pr.time.as_secs_f64())
+                        .sum::<f64>()
                 ),
+            ),
+            (None, Some((pr, cl))) => (
+                format!("{:.3e}*", cl.value),
                 pr.model.clone(),
                 format!("{:.1} s", pr.time.as_secs_f64()),
             ),
-            None => ("-".into(), "-".into(), "-".into()),
+            (None, None) => ("-".into(), "-".into(), "-".into()),
         };
         let _ = writeln!(
             table,
-            "{:<38} {:>11} {:>10.3e}  {:<9} {:<19} {:>7}",
+            "{:<38} {:>11} {:>10.3e}  {:<9} {:<28} {:>7}",
             c.name, proof, c.value, c.known, model, time
         );
     }
