@@ -419,7 +419,7 @@ pub fn prove_all() -> Result<()> {
         );
     }
     println!("{table}");
-    println!("* a proven bound on part of the constant's domain or above it; the constant itself is measured");
+    println!("* a proven bound on part of the constant's domain or above it; the constant itself is swept or measured");
     println!();
     println!("laws proven without a constant:");
     for pr in &proven {
