@@ -47,7 +47,7 @@ pub(crate) use bits::SIGN;
 /// What the vectorizable lanes of `Quat::slerp_slice` share with the single
 /// call.
 #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-pub(crate) use double::{atan2_of_root, sin_to_quarter_turn};
+pub use double::{atan2_of_root, sin_to_quarter_turn};
 /// The coefficients the x86-64 lanes of `Quat::slerp_slice` evaluate.
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
 pub(crate) use double::{ATAN as ATAN_F64, SIN as SIN_F64};

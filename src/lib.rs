@@ -234,6 +234,10 @@ mod vec;
 #[doc(hidden)]
 pub mod kani_kernels {
     pub use crate::float::{atan2, sin_cos, sqrt};
+    /// slerp's f64 angle and sine, which `proofs/gappa/angle_f64.g`,
+    /// `angle_f64_above.g` and `sin_f64.g` model.
+    #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+    pub use crate::float::{atan2_of_root, sin_to_quarter_turn};
 }
 
 pub use matrix::Matrix4;

@@ -60,7 +60,7 @@ const SIGN: u64 = 0x8000_0000_0000_0000;
 /// the polynomial's 1.7e-8 and the f64 rounding.
 #[inline(always)]
 #[must_use]
-pub(crate) fn atan2_of_root(w: f64, x: f64) -> f64 {
+pub fn atan2_of_root(w: f64, x: f64) -> f64 {
     let x2 = x * x;
     // Comparisons rather than `min` and `max`, whose NaN rules cost
     // instructions (neither is NaN here).
@@ -92,7 +92,7 @@ pub(crate) fn atan2_of_root(w: f64, x: f64) -> f64 {
 /// the polynomial's 6.1e-9 and the f64 rounding, a tenth of an f32 ulp.
 #[inline(always)]
 #[must_use]
-pub(crate) fn sin_to_quarter_turn(x: f64) -> f64 {
+pub fn sin_to_quarter_turn(x: f64) -> f64 {
     let s = x * x;
     let p = (SIN[0] + s * SIN[1]) + (s * s) * (SIN[2] + s * SIN[3]);
     x + (x * s) * p

@@ -25,6 +25,14 @@
 //!   accuracy report on 1,000,000 draws per class; written between the
 //!   page's `perf-report` markers, the page replaced only when all of it
 //!   succeeded.
+//! - `cargo xtask prove`: the accuracy constants that provers establish.
+//!   Runs every Gappa model of `proofs/gappa/` (and its Sollya scripts),
+//!   checks each certificate with `coqc`, runs the test that the models
+//!   compute what the code computes, and prints one line per constant of
+//!   `src/accuracy.rs` (its proven bound, its value, how it is known, the
+//!   model, the time), then `accuracy constants: P proven, S swept, M
+//!   measured only` ([`prove`]). Needs Debian's gappa, sollya, coq,
+//!   libcoq-flocq and libcoq-gappa. CI runs it.
 //!
 //! How an instruction count is made: the firmware (`embedded/src/bin/`)
 //! calls the two marker functions of `embedded/src/measure.rs` around each
@@ -48,6 +56,7 @@ mod firmware;
 mod gltf_check;
 mod m4f;
 mod page;
+mod prove;
 mod report;
 mod tools;
 mod trace;
@@ -101,6 +110,9 @@ enum Cmd {
         #[arg(long, default_value_t = 1_000_000)]
         draws: u64,
     },
+    /// Runs the Gappa and Sollya proofs of the accuracy constants, checks
+    /// their Coq certificates and the models' correspondence with the code
+    Prove,
 }
 
 fn main() -> ExitCode {
@@ -131,6 +143,7 @@ fn run(command: Cmd) -> Result<()> {
         Cmd::FilterCost { features } => m4f::filter_budget(features.as_deref())?,
         Cmd::PerfReport { draws } => report::perf_report(draws)?,
         Cmd::GltfCheck => gltf_check::gltf_check()?,
+        Cmd::Prove => prove::prove_all()?,
     }
     Ok(())
 }

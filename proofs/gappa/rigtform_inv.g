@@ -1,0 +1,64 @@
+# The inverse identities of RigTForm (src/rigtform.rs): a.inv() is
+# (-(r^-1 t), r^-1) with r^-1 = [w, -x, -y, -z] (exact), and the product
+# a * b is (a.t + a.r b.t, a.r b.r). So the translation of a * a.inv() is
+# t + r (-(r^-1 t)), and that of a.inv().inv() is -(r (-(r^-1 t))); their
+# rotations are r r^-1 (quat_inv.g) and r, exactly. Each rotation is the
+# computation of rotate.g. f32, round to nearest even.
+#
+# Domain: r with every component in [-1, 1]; t scaled by an exact power of
+# two so that every component is in [-1, 1] and |t| >= 1/2.
+#
+# Proven: the computed translations are within the bounds below of the
+# exact values of the same formulas, relative to |t|. For unit r those
+# exact values are 0 and t (each rotation is q [0, v] q^-1). The bounds
+# are loose (measured errors are about 1e-7 |t|): interval arithmetic
+# does not know that the first rotation preserves length, so it lets the
+# intermediate r^-1 t range over a box 27 times wider than |t|.
+#
+#! law - 2.31e-4 |translation of a * a.inv()| / |t| for unit r
+#! law - 2.04e-4 |a.inv().inv().t - t| / |t| for unit r
+@rnd = float<ieee_32, ne>;
+
+w = rnd(W); x = rnd(X); y = rnd(Y); z = rnd(Z);
+t1 = rnd(T1); t2 = rnd(T2); t3 = rnd(T3);
+
+# i = r^-1 t: rotate.g with (x, y, z) negated.
+ax rnd= ((-y) * t3 - (-z) * t2) * 2;
+ay rnd= ((-z) * t1 - (-x) * t3) * 2;
+az rnd= ((-x) * t2 - (-y) * t1) * 2;
+ix rnd= (t1 + ax * w) + ((-y) * az - (-z) * ay);
+iy rnd= (t2 + ay * w) + ((-z) * ax - (-x) * az);
+iz rnd= (t3 + az * w) + ((-x) * ay - (-y) * ax);
+# g = r (-i).
+bx rnd= (y * (-iz) - z * (-iy)) * 2;
+by rnd= (z * (-ix) - x * (-iz)) * 2;
+bz rnd= (x * (-iy) - y * (-ix)) * 2;
+gx rnd= ((-ix) + bx * w) + (y * bz - z * by);
+gy rnd= ((-iy) + by * w) + (z * bx - x * bz);
+gz rnd= ((-iz) + bz * w) + (x * by - y * bx);
+# a * a.inv(): t + g; a.inv().inv(): -g.
+ex rnd= t1 + gx;
+ey rnd= t2 + gy;
+ez rnd= t3 + gz;
+
+AX = ((-y) * t3 - (-z) * t2) * 2;
+AY = ((-z) * t1 - (-x) * t3) * 2;
+AZ = ((-x) * t2 - (-y) * t1) * 2;
+IX = (t1 + AX * w) + ((-y) * AZ - (-z) * AY);
+IY = (t2 + AY * w) + ((-z) * AX - (-x) * AZ);
+IZ = (t3 + AZ * w) + ((-x) * AY - (-y) * AX);
+BX = (y * (-IZ) - z * (-IY)) * 2;
+BY = (z * (-IX) - x * (-IZ)) * 2;
+BZ = (x * (-IY) - y * (-IX)) * 2;
+GX = ((-IX) + BX * w) + (y * BZ - z * BY);
+GY = ((-IY) + BY * w) + (z * BX - x * BZ);
+GZ = ((-IZ) + BZ * w) + (x * BY - y * BX);
+
+{ |w| <= 1 /\ |x| <= 1 /\ |y| <= 1 /\ |z| <= 1 /\
+  |t1| <= 1 /\ |t2| <= 1 /\ |t3| <= 1 /\ t1 * t1 + t2 * t2 + t3 * t3 >= 0.25
+  ->
+  sqrt((ex - (t1 + GX)) * (ex - (t1 + GX)) + (ey - (t2 + GY)) * (ey - (t2 + GY)) + (ez - (t3 + GZ)) * (ez - (t3 + GZ)))
+    / sqrt(t1 * t1 + t2 * t2 + t3 * t3) in [0, 2.31e-4] /\
+  sqrt((gx - GX) * (gx - GX) + (gy - GY) * (gy - GY) + (gz - GZ) * (gz - GZ))
+    / sqrt(t1 * t1 + t2 * t2 + t3 * t3) in [0, 2.04e-4]
+}

@@ -1,0 +1,614 @@
+//! The Gappa models of `proofs/gappa/` and the library compute the same
+//! thing: this evaluates each model's rounded definitions (its `x rnd= e;`
+//! and `x = rnd(e);` lines) exactly as written, every operation rounded to
+//! the model's format (f32 or f64, to nearest even), and compares the bits
+//! with the library's function on random and edge inputs. A proof is about
+//! the model; this is what ties it to the code. Changing the order of
+//! evaluation in either (a sum regrouped, a product's factors reassociated)
+//! changes the bits on some of these inputs and fails the test until the
+//! other follows.
+//!
+//! The evaluator reads the subset of Gappa the models use: `@rnd =
+//! float<ieee_32, ne>;` (or `ieee_64`), inputs `a = rnd(A);` (the name in
+//! capitals a free real), rounded definitions, exact definitions (ignored,
+//! they are the proofs' reference), numbers in decimal, `NbE` (N 2^E) and
+//! hexadecimal, `+ - * /`, unary minus and `sqrt`. Everything after the
+//! first `{` (the goals and the hints) is the proofs' business. An f32
+//! operation is evaluated in f64 and rounded to f32, which is the correctly
+//! rounded f32 result for these operations (53 >= 2 * 24 + 2).
+
+use std::collections::BTreeMap;
+
+use rigtform::kani_kernels;
+use rigtform::{Cvec3, Quat, RigTForm};
+use rigtform_proofs::draw::Draws;
+use rigtform_proofs::edge::EDGE_F32;
+
+/// Draws per model.
+const DRAWS: usize = 200_000;
+
+#[derive(Clone, Debug, PartialEq)]
+enum Expr {
+    Num(f64),
+    Var(String),
+    Neg(Box<Expr>),
+    Bin(char, Box<Expr>, Box<Expr>),
+    Sqrt(Box<Expr>),
+}
+
+/// A model's rounded computation: its format, its inputs, and its rounded
+/// definitions in order.
+#[derive(Debug)]
+struct Model {
+    name: &'static str,
+    inputs: Vec<String>,
+    defs: Vec<Def>,
+}
+
+/// A rounded definition: `name fmt= expr` rounds every operation to the
+/// format (`every_op`), `name = fmt(expr)` rounds the exact value of one
+/// operation once.
+#[derive(Debug)]
+struct Def {
+    name: String,
+    expr: Expr,
+    single: bool,
+    every_op: bool,
+}
+
+/// Counts the operations of an expression (negation is exact, not one).
+fn operations(e: &Expr) -> usize {
+    match e {
+        Expr::Num(_) | Expr::Var(_) => 0,
+        Expr::Neg(a) => operations(a),
+        Expr::Sqrt(a) => 1 + operations(a),
+        Expr::Bin(_, a, b) => 1 + operations(a) + operations(b),
+    }
+}
+
+fn tokens(s: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let c: Vec<char> = s.chars().collect();
+    let mut i = 0;
+    while i < c.len() {
+        let ch = c[i];
+        if ch.is_whitespace() {
+            i += 1;
+        } else if ch.is_ascii_digit()
+            || (ch == '.' && c.get(i + 1).is_some_and(|d| d.is_ascii_digit()))
+        {
+            let start = i;
+            let hex = ch == '0' && matches!(c.get(i + 1), Some('x') | Some('X'));
+            if hex {
+                i += 2;
+            }
+            while i < c.len() {
+                let d = c[i];
+                let exponent_sign = (d == '-' || d == '+')
+                    && matches!(c[i - 1], 'e' | 'E' | 'b' | 'p' | 'P')
+                    && !(hex && matches!(c[i - 1], 'e' | 'E' | 'b'));
+                if d.is_ascii_alphanumeric() || d == '.' || exponent_sign {
+                    i += 1;
+                } else {
+                    break;
+                }
+            }
+            out.push(c[start..i].iter().collect());
+        } else if ch.is_ascii_alphabetic() || ch == '_' {
+            let start = i;
+            while i < c.len() && (c[i].is_ascii_alphanumeric() || c[i] == '_') {
+                i += 1;
+            }
+            out.push(c[start..i].iter().collect());
+        } else {
+            out.push(ch.to_string());
+            i += 1;
+        }
+    }
+    out
+}
+
+/// A number in one of Gappa's notations.
+fn number(t: &str) -> f64 {
+    if let Some(hex) = t.strip_prefix("0x") {
+        let (mantissa, exponent) = hex.split_once(['p', 'P']).unwrap_or((hex, "0"));
+        let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+        let digits = format!("{int}{frac}");
+        let m = u64::from_str_radix(&digits, 16).unwrap_or_else(|e| panic!("{t}: {e}"));
+        let e: i32 = exponent.parse().unwrap_or_else(|e| panic!("{t}: {e}"));
+        // m has at most 53 significant bits in the models; scaling by a
+        // power of two is exact.
+        assert!(m < 1 << 53, "{t}: more than 53 bits");
+        return m as f64 * 2f64.powi(e - 4 * frac.len() as i32);
+    }
+    if let Some((m, e)) = t.split_once('b') {
+        let m: i64 = m.parse().unwrap_or_else(|e| panic!("{t}: {e}"));
+        let e: i32 = e.parse().unwrap_or_else(|e| panic!("{t}: {e}"));
+        return m as f64 * 2f64.powi(e);
+    }
+    t.parse().unwrap_or_else(|e| panic!("{t}: {e}"))
+}
+
+struct Parser {
+    t: Vec<String>,
+    i: usize,
+}
+
+impl Parser {
+    fn peek(&self) -> Option<&str> {
+        self.t.get(self.i).map(String::as_str)
+    }
+    fn next(&mut self) -> String {
+        let t = self.t.get(self.i).cloned().unwrap_or_default();
+        self.i += 1;
+        t
+    }
+    fn expect(&mut self, s: &str) {
+        let t = self.next();
+        assert_eq!(t, s, "expected {s:?} in {:?}", self.t);
+    }
+    fn expr(&mut self) -> Expr {
+        let mut e = self.term();
+        while let Some(op @ ("+" | "-")) = self.peek() {
+            let op = op.chars().next().unwrap_or('+');
+            self.i += 1;
+            e = Expr::Bin(op, Box::new(e), Box::new(self.term()));
+        }
+        e
+    }
+    fn term(&mut self) -> Expr {
+        let mut e = self.unary();
+        while let Some(op @ ("*" | "/")) = self.peek() {
+            let op = op.chars().next().unwrap_or('*');
+            self.i += 1;
+            e = Expr::Bin(op, Box::new(e), Box::new(self.unary()));
+        }
+        e
+    }
+    fn unary(&mut self) -> Expr {
+        if self.peek() == Some("-") {
+            self.i += 1;
+            return Expr::Neg(Box::new(self.unary()));
+        }
+        self.primary()
+    }
+    fn primary(&mut self) -> Expr {
+        let t = self.next();
+        match t.as_str() {
+            "(" => {
+                let e = self.expr();
+                self.expect(")");
+                e
+            }
+            "sqrt" => {
+                self.expect("(");
+                let e = self.expr();
+                self.expect(")");
+                Expr::Sqrt(Box::new(e))
+            }
+            _ if t.starts_with(|c: char| c.is_ascii_digit() || c == '.') => Expr::Num(number(&t)),
+            _ if t.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') => Expr::Var(t),
+            _ => panic!("unexpected {t:?} in {:?}", self.t),
+        }
+    }
+}
+
+fn parse(name: &'static str, text: &str) -> Model {
+    let body: String = text
+        .lines()
+        .map(|l| l.split('#').next().unwrap_or(""))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let body = body.split('{').next().unwrap_or("");
+    let mut model = Model {
+        name,
+        inputs: Vec::new(),
+        defs: Vec::new(),
+    };
+    // Format name -> whether it is f32 (else f64).
+    let mut formats: BTreeMap<String, bool> = BTreeMap::new();
+    let expression = |s: &str| {
+        let mut p = Parser { t: tokens(s), i: 0 };
+        let e = p.expr();
+        assert_eq!(p.i, p.t.len(), "{name}: trailing tokens in {s}");
+        e
+    };
+    for statement in body.split(';').map(str::trim).filter(|s| !s.is_empty()) {
+        if let Some(rest) = statement.strip_prefix('@') {
+            let (format, kind) = rest
+                .split_once('=')
+                .unwrap_or_else(|| panic!("{name}: {rest}"));
+            assert!(
+                kind.contains("ieee_32") || kind.contains("ieee_64"),
+                "{name}: {rest}"
+            );
+            assert!(kind.contains("ne>"), "{name}: only round to nearest even");
+            formats.insert(format.trim().to_string(), kind.contains("ieee_32"));
+            continue;
+        }
+        let (lhs, rhs) = statement
+            .split_once('=')
+            .unwrap_or_else(|| panic!("{name}: {statement}"));
+        let lhs: Vec<&str> = lhs.split_whitespace().collect();
+        if let [var, format] = lhs[..] {
+            let single = *formats
+                .get(format)
+                .unwrap_or_else(|| panic!("{name}: format {format}"));
+            model.defs.push(Def {
+                name: var.to_string(),
+                expr: expression(rhs),
+                single,
+                every_op: true,
+            });
+            continue;
+        }
+        let [var] = lhs[..] else {
+            panic!("{name}: {statement}")
+        };
+        let rhs = rhs.trim();
+        let rounded = rhs.split_once('(').and_then(|(f, inner)| {
+            let single = formats.get(f.trim())?;
+            Some((*single, inner.strip_suffix(')')?))
+        });
+        if let Some((single, inner)) = rounded {
+            match expression(inner) {
+                Expr::Var(v) if v.starts_with(|c: char| c.is_ascii_uppercase()) => {
+                    model.inputs.push(var.to_string())
+                }
+                e => {
+                    assert!(
+                        operations(&e) <= 1,
+                        "{name}: {var} rounds more than one operation once"
+                    );
+                    model.defs.push(Def {
+                        name: var.to_string(),
+                        expr: e,
+                        single,
+                        every_op: false,
+                    });
+                }
+            }
+        }
+        // Anything else is an exact definition: the proofs' reference.
+    }
+    assert!(!formats.is_empty(), "{name}: no format");
+    model
+}
+
+impl Model {
+    /// `e` with every operation rounded to f32 (`single`) or f64.
+    fn eval(&self, e: &Expr, env: &BTreeMap<String, f64>, single: bool) -> f64 {
+        let round = |x: f64| if single { x as f32 as f64 } else { x };
+        match e {
+            Expr::Num(v) => {
+                assert_eq!(round(*v), *v, "{}: {v} is not in the format", self.name);
+                *v
+            }
+            Expr::Var(v) => *env
+                .get(v)
+                .unwrap_or_else(|| panic!("{}: {v} undefined", self.name)),
+            Expr::Neg(a) => -self.eval(a, env, single),
+            Expr::Sqrt(a) => round(self.eval(a, env, single).sqrt()),
+            Expr::Bin(op, a, b) => {
+                let (a, b) = (self.eval(a, env, single), self.eval(b, env, single));
+                round(match op {
+                    '+' => a + b,
+                    '-' => a - b,
+                    '*' => a * b,
+                    _ => a / b,
+                })
+            }
+        }
+    }
+
+    /// Every rounded definition, for these inputs (in the order of the
+    /// model's input lines).
+    fn run(&self, inputs: &[f64]) -> BTreeMap<String, f64> {
+        assert_eq!(inputs.len(), self.inputs.len(), "{}: inputs", self.name);
+        let mut env: BTreeMap<String, f64> = self
+            .inputs
+            .iter()
+            .cloned()
+            .zip(inputs.iter().copied())
+            .collect();
+        for d in &self.defs {
+            let v = if d.every_op {
+                self.eval(&d.expr, &env, d.single)
+            } else {
+                // One operation, exact to f64's rounding, then rounded to
+                // the format: the correctly rounded result.
+                let v = self.eval(&d.expr, &env, false);
+                if d.single {
+                    v as f32 as f64
+                } else {
+                    v
+                }
+            };
+            env.insert(d.name.clone(), v);
+        }
+        env
+    }
+}
+
+fn model(name: &'static str) -> Model {
+    let path = format!("{}/gappa/{name}.g", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    parse(name, &text)
+}
+
+/// Both NaN, or the same bits.
+fn same(model: f64, code: f32) -> bool {
+    (model.is_nan() && code.is_nan()) || (model as f32).to_bits() == code.to_bits()
+}
+
+fn check(model: &Model, out: &BTreeMap<String, f64>, name: &str, code: f32, inputs: &[f32]) {
+    let m = out[name];
+    assert!(
+        same(m, code),
+        "{}: {name} = {m:e} in the model, {code:e} in the code, for inputs {inputs:?}",
+        model.name
+    );
+}
+
+/// A component for the four-component models: from the mixture of edge,
+/// moderate and raw values, or in [-1, 1] (the proofs' domain).
+fn component(d: &mut Draws) -> f32 {
+    if d.below(2) == 0 {
+        d.f32_mixed()
+    } else {
+        d.uniform(-1.0, 1.0)
+    }
+}
+
+fn quat([w, x, y, z]: [f32; 4]) -> Quat {
+    Quat { w, x, y, z }
+}
+
+fn draws() -> impl Iterator<Item = (usize, Draws)> {
+    (0..DRAWS).map(|i| (i, Draws::new(0x9a99a ^ i as u64)))
+}
+
+#[test]
+fn product_is_mul_g() {
+    let m = model("mul");
+    assert_eq!(m.inputs, ["aw", "ax", "ay", "az", "bw", "bx", "by", "bz"]);
+    for (i, mut d) in draws() {
+        let v: [f32; 8] = if i % 3 == 0 {
+            let (a, b) = (d.unit_quat(), d.unit_quat());
+            [a.w, a.x, a.y, a.z, b.w, b.x, b.y, b.z]
+        } else {
+            core::array::from_fn(|_| component(&mut d))
+        };
+        let p = quat([v[0], v[1], v[2], v[3]]) * quat([v[4], v[5], v[6], v[7]]);
+        let out = m.run(&v.map(f64::from));
+        for (name, c) in [("pw", p.w), ("px", p.x), ("py", p.y), ("pz", p.z)] {
+            check(&m, &out, name, c, &v);
+        }
+    }
+}
+
+/// normalize.g on the components as scale_for_squares leaves them: as they
+/// are when their sum of squares (the model's `s`) lies in [2^-100,
+/// f32::MAX], otherwise scaled as normalize_scale.g (by 2^-66 when it
+/// overflowed, else by 2^100). The choice of branch is the code's, written
+/// out here; the arithmetic of each branch is the models'.
+#[test]
+fn normalize_is_normalize_g_in_each_branch() {
+    let m = model("normalize");
+    let scale = model("normalize_scale");
+    assert_eq!(m.inputs, ["a", "b", "c", "d"]);
+    let mut branches = [0usize; 3];
+    for (i, mut d) in draws() {
+        // Every scale: the exponent drawn from the whole range.
+        let v: [f32; 4] = core::array::from_fn(|_| {
+            let c = d.uniform(-1.0, 1.0);
+            let e = if i % 2 == 0 {
+                d.below(280) as i32 - 150
+            } else {
+                0
+            };
+            let c = c * 2f32.powi(e.clamp(-126, 127)) * 2f32.powi((e + 126).min(0));
+            if d.below(8) == 0 {
+                0.0
+            } else {
+                c
+            }
+        });
+        if !v.iter().all(|c| c.is_finite()) || v.iter().all(|&c| c == 0.0) {
+            continue;
+        }
+        let s = m.run(&v.map(f64::from))["s"];
+        let scaled = if (2f64.powi(-100)..=f64::from(f32::MAX)).contains(&s) {
+            branches[0] += 1;
+            v.map(f64::from)
+        } else {
+            let name = if s.is_infinite() { "down" } else { "up" };
+            branches[if s.is_infinite() { 1 } else { 2 }] += 1;
+            v.map(|c| scale.run(&[f64::from(c)])[name])
+        };
+        let out = m.run(&scaled);
+        let n = quat(v).normalize();
+        for (name, c) in [("ca", n.w), ("cb", n.x), ("cc", n.y), ("cd", n.z)] {
+            check(&m, &out, name, c, &v);
+        }
+    }
+    assert!(
+        branches.iter().all(|&b| b > 1000),
+        "branches drawn: {branches:?}"
+    );
+}
+
+#[test]
+fn rotation_is_rotate_g() {
+    let m = model("rotate");
+    assert_eq!(m.inputs, ["w", "x", "y", "z", "vx", "vy", "vz"]);
+    for (i, mut d) in draws() {
+        let v: [f32; 7] = if i % 3 == 0 {
+            let (q, p) = (d.unit_quat(), d.vec3(10.0));
+            [q.w, q.x, q.y, q.z, p.x, p.y, p.z]
+        } else {
+            core::array::from_fn(|_| component(&mut d))
+        };
+        let r = quat([v[0], v[1], v[2], v[3]]) * Cvec3::new(v[4], v[5], v[6]);
+        let out = m.run(&v.map(f64::from));
+        for (name, c) in [("rx", r.x), ("ry", r.y), ("rz", r.z)] {
+            check(&m, &out, name, c, &v);
+        }
+    }
+}
+
+#[test]
+fn product_with_the_inverse_is_quat_inv_g() {
+    let m = model("quat_inv");
+    assert_eq!(m.inputs, ["w", "x", "y", "z"]);
+    for (i, mut d) in draws() {
+        let v: [f32; 4] = if i % 2 == 0 {
+            let q = d.unit_quat();
+            [q.w, q.x, q.y, q.z]
+        } else {
+            core::array::from_fn(|_| component(&mut d))
+        };
+        let q = quat(v);
+        let p = q * q.inv();
+        let out = m.run(&v.map(f64::from));
+        for (name, c) in [("pw", p.w), ("px", p.x), ("py", p.y), ("pz", p.z)] {
+            check(&m, &out, name, c, &v);
+        }
+        // The x component's terms cancel in adjacent pairs: exactly zero
+        // for finite inputs whose products do not overflow.
+        if v.iter().all(|c| c.abs() < 1e19) {
+            assert_eq!(p.x, 0.0, "{v:?}: {p:?}");
+        }
+    }
+}
+
+#[test]
+fn rig_tform_inverse_identities_are_rigtform_inv_g() {
+    let m = model("rigtform_inv");
+    assert_eq!(m.inputs, ["w", "x", "y", "z", "t1", "t2", "t3"]);
+    for (i, mut d) in draws() {
+        let v: [f32; 7] = if i % 3 == 0 {
+            let (q, t) = (d.unit_quat(), d.vec3(100.0));
+            [q.w, q.x, q.y, q.z, t.x, t.y, t.z]
+        } else {
+            core::array::from_fn(|_| component(&mut d))
+        };
+        let a = RigTForm::new(Cvec3::new(v[4], v[5], v[6]), quat([v[0], v[1], v[2], v[3]]));
+        let out = m.run(&v.map(f64::from));
+        let e = (a * a.inv()).t;
+        for (name, c) in [("ex", e.x), ("ey", e.y), ("ez", e.z)] {
+            check(&m, &out, name, c, &v);
+        }
+        let back = a.inv().inv().t;
+        for (name, c) in [("gx", back.x), ("gy", back.y), ("gz", back.z)] {
+            check(&m, &out, name, -c, &v);
+        }
+    }
+}
+
+#[test]
+fn square_root_is_sqrt_g() {
+    let m = model("sqrt");
+    assert_eq!(m.inputs, ["x"]);
+    let mut d = Draws::new(5);
+    let raw = (0..DRAWS).map(|_| f32::from_bits(d.next_u32() & 0x7fff_ffff));
+    for x in EDGE_F32.into_iter().chain(raw) {
+        check(
+            &m,
+            &m.run(&[f64::from(x)]),
+            "r",
+            kani_kernels::sqrt(x),
+            &[x],
+        );
+    }
+}
+
+#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+#[test]
+fn f64_sine_is_sin_f64_g() {
+    let m = model("sin_f64");
+    assert_eq!(m.inputs, ["x"]);
+    let mut d = Draws::new(11);
+    for i in 0..DRAWS {
+        // f32 arguments (as slerp's sweep) and f64 ones (as slerp computes).
+        let x = if i % 2 == 0 {
+            f64::from(d.uniform(9.3e-10, core::f32::consts::FRAC_PI_2))
+        } else {
+            f64::from_bits(d.next_u64()).abs() % core::f64::consts::FRAC_PI_2
+        };
+        let model = m.run(&[x])["y"];
+        let code = kani_kernels::sin_to_quarter_turn(x);
+        assert!(
+            model.to_bits() == code.to_bits() || (model.is_nan() && code.is_nan()),
+            "sin_f64: {model:e} in the model, {code:e} in the code, at {x:e}"
+        );
+    }
+}
+
+/// angle_f64.g where the code takes its first branch (`w < x x`, and
+/// `w = x x`, where both branches compute z = 1 and the result is `a`),
+/// angle_f64_above.g where it takes the second (`w > x x`).
+#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+#[test]
+fn f64_angle_is_angle_f64_g_in_each_branch() {
+    let below = model("angle_f64");
+    let above = model("angle_f64_above");
+    assert_eq!(below.inputs, ["w", "x"]);
+    assert_eq!(above.inputs, ["w", "x"]);
+    let mut d = Draws::new(13);
+    let mut branches = [0usize; 2];
+    for i in 0..DRAWS {
+        let t = f64::from(d.uniform(0.0, 1.0));
+        // The constant's pairs (t, 1) and (1, t), and f64 pairs at every scale.
+        let (w, x) = match i % 3 {
+            0 => (t, 1.0),
+            1 => (1.0, t),
+            _ => {
+                let w = f64::from_bits(d.next_u64() >> 2);
+                let x = f64::from_bits(d.next_u64() >> 2);
+                (w, x)
+            }
+        };
+        let code = kani_kernels::atan2_of_root(w, x);
+        let (m, out) = if w > x * x {
+            branches[1] += 1;
+            (&above, "res")
+        } else {
+            branches[0] += 1;
+            (&below, "a")
+        };
+        let model = m.run(&[w, x])[out];
+        assert!(
+            model.to_bits() == code.to_bits() || (model.is_nan() && code.is_nan()),
+            "{}: {model:e} in the model, {code:e} in the code, at ({w:e}, {x:e})",
+            m.name
+        );
+    }
+    assert!(
+        branches.iter().all(|&b| b > 1000),
+        "branches drawn: {branches:?}"
+    );
+}
+
+/// The evaluator itself: its notations and its rounding.
+#[test]
+fn evaluator_reads_the_notations_and_rounds_each_operation() {
+    assert_eq!(number("7b-24"), 7.0 * 2f64.powi(-24));
+    assert_eq!(number("0x1p100"), 2f64.powi(100));
+    assert_eq!(number("-0x1.8p-1".trim_start_matches('-')), 0.75);
+    assert_eq!(number("9.29e-10"), 9.29e-10);
+    let m = parse(
+        "t",
+        "@rnd = float<ieee_32, ne>;\na = rnd(A); b = rnd(B);\ns rnd= a + b - a;\nS = a + b - a;\n{ a in [0, 1] -> s in ? }",
+    );
+    assert_eq!(m.inputs, ["a", "b"]);
+    assert_eq!(m.defs.len(), 1);
+    assert!(m.defs[0].single && m.defs[0].every_op);
+    // (1 + 2^-30) - 1 rounds the sum to 1 in f32 first: 0, not 2^-30.
+    assert_eq!(m.run(&[1.0, 2f64.powi(-30)])["s"], 0.0);
+    let m = parse(
+        "u",
+        "@rnd = float<ieee_64, ne>;\na = rnd(A); b = rnd(B);\ns rnd= a + b - a;",
+    );
+    assert_eq!(m.run(&[1.0, 2f64.powi(-30)])["s"], 2f64.powi(-30));
+}

@@ -1,0 +1,476 @@
+//! `cargo xtask prove`: the accuracy constants that provers establish.
+//!
+//! Every model of `proofs/gappa/` (`*.g`) is run through Gappa, which
+//! writes its proof as a Coq script (`gappa -Bcoq`), and `coqc` checks the
+//! script against Flocq and Gappa's Coq library. A model's Sollya scripts
+//! (`#! sollya FILE HYPOTHESIS`) bound a polynomial's approximation error
+//! (`supnorm`), which must not exceed the hypothesis the Gappa model takes
+//! it as. Then the correspondence test
+//! (`proofs/tests/gappa_correspondence.rs`) checks that the models compute
+//! what the library computes, bit for bit.
+//!
+//! A model says what it proves in `#!` lines:
+//!
+//! - `#! bound NAME VALUE what`: the constant `NAME` of `src/accuracy.rs`,
+//!   over its whole domain, or over the part of it that this model's
+//!   branch of the code takes, is at most `VALUE` (with several models,
+//!   the constant's proven bound is the largest of theirs);
+//! - `#! looser NAME VALUE what`: the quantity `NAME` bounds, on part of
+//!   its domain or for one of its operations, is at most `VALUE`, which
+//!   is above the constant (the constant is then only measured);
+//! - `#! law - VALUE what`: a law of the contract without a constant.
+//!
+//! `VALUE` must be the upper end of one of the model's goals, written the
+//! same way (`, VALUE]`), so that the certificate proves that very number.
+//!
+//! Each constant's doc comment in `src/accuracy.rs` says how it is known, in
+//! a line `Known: proven ...`, `Known: swept ...` (every f32 of its domain,
+//! by an exhaustive test) or `Known: measured ...`. This fails when a
+//! model or certificate fails, when Sollya's bound exceeds its hypothesis,
+//! when the correspondence fails, when a constant said proven has no model
+//! that proves it or a proven bound above it, when a model proves a
+//! constant that does not say so, and when a constant does not say how it
+//! is known.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::Path;
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+use anyhow::{bail, Context, Result};
+
+use crate::tools::{cargo, output, root, say};
+
+/// What a model's `#!` line claims.
+#[derive(Clone, Debug)]
+struct Claim {
+    kind: String,
+    name: String,
+    value: f64,
+    text: String,
+}
+
+/// A model that Gappa proved and Coq checked.
+#[derive(Debug)]
+struct Proven {
+    model: String,
+    claims: Vec<Claim>,
+    time: Duration,
+}
+
+/// How `src/accuracy.rs` says a constant is known.
+#[derive(Debug)]
+struct Constant {
+    name: String,
+    value: f64,
+    known: String,
+}
+
+/// A number as the models write it: decimal, `NbE` (N 2^E) or hexadecimal.
+fn number(t: &str) -> Result<f64> {
+    if let Some(hex) = t.strip_prefix("0x") {
+        let (mantissa, exponent) = hex.split_once(['p', 'P']).unwrap_or((hex, "0"));
+        let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+        let m = u64::from_str_radix(&format!("{int}{frac}"), 16)
+            .with_context(|| format!("{t}: not a number"))?;
+        let e: i32 = exponent
+            .parse()
+            .with_context(|| format!("{t}: not a number"))?;
+        return Ok(m as f64 * 2f64.powi(e - 4 * frac.len() as i32));
+    }
+    if let Some((m, e)) = t.split_once('b') {
+        let m: i64 = m.parse().with_context(|| format!("{t}: not a number"))?;
+        let e: i32 = e.parse().with_context(|| format!("{t}: not a number"))?;
+        return Ok(m as f64 * 2f64.powi(e));
+    }
+    t.parse().with_context(|| format!("{t}: not a number"))
+}
+
+/// A model's Sollya scripts, each with the hypothesis its bound must meet.
+type SollyaScripts = Vec<(String, String)>;
+
+/// The `#!` claims of a model, each checked to be the upper end of a goal.
+fn claims(path: &Path, text: &str) -> Result<(Vec<Claim>, SollyaScripts)> {
+    let goals = text.split_once('{').map(|(_, g)| g).unwrap_or("");
+    let mut claims = Vec::new();
+    let mut sollya = Vec::new();
+    for line in text.lines().filter_map(|l| l.strip_prefix("#!")) {
+        let mut words = line.split_whitespace();
+        let kind = words.next().unwrap_or("").to_owned();
+        let name = words.next().unwrap_or("").to_owned();
+        let value = words.next().unwrap_or("").to_owned();
+        if kind == "sollya" {
+            if !goals.contains(&value) {
+                bail!(
+                    "{}: the Sollya bound {value} is not a hypothesis of the model",
+                    path.display()
+                );
+            }
+            sollya.push((name, value));
+            continue;
+        }
+        if !matches!(kind.as_str(), "bound" | "looser" | "law") {
+            bail!("{}: unknown claim `#!{line}`", path.display());
+        }
+        if !goals.contains(&format!(", {value}]")) {
+            bail!(
+                "{}: {value} (`#!{line}`) is not the upper end of a goal",
+                path.display()
+            );
+        }
+        claims.push(Claim {
+            kind,
+            name,
+            value: number(&value)?,
+            text: words.collect::<Vec<_>>().join(" "),
+        });
+    }
+    Ok((claims, sollya))
+}
+
+/// Sollya's bound: the last line it prints.
+fn run_sollya(dir: &Path, file: &str) -> Result<f64> {
+    let out = output(
+        Command::new("sollya")
+            .arg("--warnonstderr")
+            .arg(dir.join(file)),
+    )
+    .context("sollya (Debian: apt-get install sollya)")?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    let last = text
+        .lines()
+        .rev()
+        .find(|l| !l.trim().is_empty())
+        .unwrap_or("");
+    last.trim()
+        .parse()
+        .with_context(|| format!("{file}: Sollya printed {last:?}, not a bound"))
+}
+
+/// Runs one model: its Sollya scripts, Gappa, and Coq on the certificate.
+fn prove(path: &Path, work: &Path) -> Result<Proven> {
+    let start = Instant::now();
+    let text = std::fs::read_to_string(path).with_context(|| format!("{}", path.display()))?;
+    let (claims, sollya) = claims(path, &text)?;
+    let stem = path
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .context("model name")?
+        .to_owned();
+    let dir = path.parent().context("model directory")?;
+    for (file, hypothesis) in sollya {
+        let bound = run_sollya(dir, &file)?;
+        let hyp = number(&hypothesis)?;
+        if bound > hyp {
+            bail!("{file}: Sollya bounds the approximation error by {bound:e}, above the {hyp:e} that {stem}.g assumes");
+        }
+        say(format!(
+            "{file}: approximation error at most {bound:.6e} (<= {hypothesis})"
+        ));
+    }
+    let gappa = Command::new("gappa")
+        .arg("-Bcoq")
+        .arg(path)
+        .output()
+        .context("could not run gappa (Debian: apt-get install gappa)")?;
+    let messages = String::from_utf8_lossy(&gappa.stderr);
+    if !gappa.status.success() || messages.contains("Error") {
+        // Gappa's warnings (iterations, rewritings) before its error are noise here.
+        let error = messages
+            .lines()
+            .skip_while(|l| !l.starts_with("Error"))
+            .collect::<Vec<_>>()
+            .join("\n");
+        bail!("gappa did not prove {}:\n{error}", path.display());
+    }
+    let script = String::from_utf8(gappa.stdout).context("gappa's certificate")?;
+    if script.contains("Admitted") || script.contains("Axiom") {
+        bail!("{stem}: the certificate admits something");
+    }
+    let v = work.join(format!("{stem}.v"));
+    std::fs::write(&v, &script).with_context(|| format!("{}", v.display()))?;
+    output(Command::new("coqc").arg(&v).current_dir(work))
+        .with_context(|| format!("coqc rejected the certificate of {stem}.g (Debian: apt-get install coq libcoq-flocq libcoq-gappa)"))?;
+    let time = start.elapsed();
+    say(format!(
+        "{stem}.g: proven; certificate of {} lines checked by coqc ({:.1} s)",
+        script.lines().count(),
+        time.as_secs_f64()
+    ));
+    Ok(Proven {
+        model: format!("{stem}.g"),
+        claims,
+        time,
+    })
+}
+
+/// The constants of `src/accuracy.rs` (the default backend's values) and
+/// how each says it is known.
+fn constants(text: &str) -> Result<Vec<Constant>> {
+    let backend = text
+        .split_once("\nmod backend {")
+        .and_then(|(_, b)| b.split_once("\n}"))
+        .map(|(b, _)| b)
+        .context("src/accuracy.rs: no default backend module")?;
+    let value_of = |expr: &str| -> Result<f64> {
+        match expr.strip_prefix("backend::") {
+            Some(name) => {
+                let line = backend
+                    .lines()
+                    .find(|l| {
+                        l.trim_start()
+                            .starts_with(&format!("pub const {name}: f32 = "))
+                    })
+                    .with_context(|| format!("backend::{name} not found"))?;
+                let v = line.split_once(" = ").map(|(_, v)| v).unwrap_or("");
+                let v = v.split(';').next().unwrap_or("").trim();
+                v.parse::<f32>()
+                    .map(f64::from)
+                    .with_context(|| format!("{name} = {v}"))
+            }
+            None => expr
+                .parse::<f32>()
+                .map(f64::from)
+                .with_context(|| format!("{expr}: not a number")),
+        }
+    };
+    let mut out = Vec::new();
+    let mut doc = String::new();
+    for line in text.lines() {
+        if let Some(d) = line.strip_prefix("///") {
+            doc.push_str(d);
+            doc.push('\n');
+            continue;
+        }
+        if let Some(rest) = line.strip_prefix("pub const ") {
+            let (name, rest) = rest.split_once(':').context("constant")?;
+            let expr = rest
+                .split_once(" = ")
+                .map(|(_, v)| v)
+                .unwrap_or("")
+                .split(';')
+                .next()
+                .unwrap_or("")
+                .trim();
+            let known = doc
+                .split_once("Known:")
+                .map(|(_, k)| {
+                    k.split_whitespace()
+                        .next()
+                        .unwrap_or("")
+                        .trim_end_matches([':', '.', ','])
+                })
+                .unwrap_or("")
+                .to_owned();
+            out.push(Constant {
+                name: name.to_owned(),
+                value: value_of(expr)?,
+                known,
+            });
+        }
+        if !line.trim().is_empty() {
+            doc.clear();
+        }
+    }
+    Ok(out)
+}
+
+/// Runs everything; prints one line per constant and the count.
+pub fn prove_all() -> Result<()> {
+    let root = root();
+    let dir = root.join("proofs/gappa");
+    let mut models: Vec<_> = std::fs::read_dir(&dir)
+        .with_context(|| format!("{}", dir.display()))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|e| e == "g"))
+        .collect();
+    models.sort();
+    if models.is_empty() {
+        bail!("no models in {}", dir.display());
+    }
+    let work = tempfile::tempdir().context("a directory for the certificates")?;
+    let mut proven = Vec::new();
+    for model in &models {
+        proven.push(prove(model, work.path())?);
+    }
+
+    say("the correspondence of models and code (cargo test -p rigtform-proofs --test gappa_correspondence)");
+    let test = cargo()
+        .args([
+            "test",
+            "-q",
+            "-p",
+            "rigtform-proofs",
+            "--test",
+            "gappa_correspondence",
+        ])
+        .current_dir(&root)
+        .output()
+        .context("could not run cargo test")?;
+    if !test.status.success() {
+        let out = String::from_utf8_lossy(&test.stdout);
+        let failures: Vec<_> = out
+            .lines()
+            .filter(|l| l.contains("panicked at") || l.contains(" in the model, "))
+            .collect();
+        bail!(
+            "the models and the code no longer compute the same thing:\n{}\n{}",
+            failures.join("\n"),
+            String::from_utf8_lossy(&test.stderr).trim_end()
+        );
+    }
+
+    let accuracy =
+        std::fs::read_to_string(root.join("src/accuracy.rs")).context("src/accuracy.rs")?;
+    let constants = constants(&accuracy)?;
+    let mut by_name: BTreeMap<&str, Vec<(&Proven, &Claim)>> = BTreeMap::new();
+    for p in &proven {
+        for c in &p.claims {
+            by_name.entry(c.name.as_str()).or_default().push((p, c));
+        }
+    }
+    for name in by_name.keys().filter(|n| **n != "-") {
+        if !constants.iter().any(|c| c.name == *name) {
+            bail!("a model claims {name}, which src/accuracy.rs does not define");
+        }
+    }
+
+    let mut table = String::new();
+    let mut errors = Vec::new();
+    let (mut p, mut s, mut m) = (0, 0, 0);
+    let _ = writeln!(
+        table,
+        "{:<38} {:>11} {:>10}  {:<9} {:<28} {:>7}",
+        "constant", "proven", "constant", "known", "model", "time"
+    );
+    for c in &constants {
+        let claims = by_name
+            .get(c.name.as_str())
+            .map(Vec::as_slice)
+            .unwrap_or(&[]);
+        // A constant's domain may be split among models (one per branch of
+        // the code): its proven bound is the largest of theirs.
+        let bounds: Vec<_> = claims.iter().filter(|(_, cl)| cl.kind == "bound").collect();
+        let bound = bounds
+            .iter()
+            .copied()
+            .max_by(|a, b| a.1.value.total_cmp(&b.1.value));
+        let looser = claims.iter().find(|(_, cl)| cl.kind == "looser");
+        match c.known.as_str() {
+            "proven" => {
+                p += 1;
+                match bound {
+                    None => errors.push(format!(
+                        "{} says it is proven, but no model proves it",
+                        c.name
+                    )),
+                    Some((_, cl)) if cl.value > c.value => errors.push(format!(
+                        "{}: the proven bound {:e} exceeds the constant {:e}",
+                        c.name, cl.value, c.value
+                    )),
+                    Some(_) => {}
+                }
+            }
+            "swept" => s += 1,
+            "measured" => m += 1,
+            "" => errors.push(format!(
+                "{}: its doc does not say how it is known (`Known:`)",
+                c.name
+            )),
+            other => errors.push(format!(
+                "{}: `Known: {other}` is not proven, swept or measured",
+                c.name
+            )),
+        }
+        if bound.is_some() && c.known != "proven" {
+            errors.push(format!(
+                "{} is proven by a model, but its doc says `Known: {}`",
+                c.name, c.known
+            ));
+        }
+        let (proof, model, time) = match (bound, looser) {
+            (Some((_, cl)), _) => (
+                format!("{:.3e}", cl.value),
+                bounds
+                    .iter()
+                    .map(|(pr, _)| pr.model.as_str())
+                    .collect::<Vec<_>>()
+                    .join("+"),
+                format!(
+                    "{:.1} s",
+                    bounds
+                        .iter()
+                        .map(|(pr, _)| pr.time.as_secs_f64())
+                        .sum::<f64>()
+                ),
+            ),
+            (None, Some((pr, cl))) => (
+                format!("{:.3e}*", cl.value),
+                pr.model.clone(),
+                format!("{:.1} s", pr.time.as_secs_f64()),
+            ),
+            (None, None) => ("-".into(), "-".into(), "-".into()),
+        };
+        let _ = writeln!(
+            table,
+            "{:<38} {:>11} {:>10.3e}  {:<9} {:<28} {:>7}",
+            c.name, proof, c.value, c.known, model, time
+        );
+    }
+    println!("{table}");
+    println!("* a proven bound on part of the constant's domain or above it; the constant itself is swept or measured");
+    println!();
+    println!("laws proven without a constant:");
+    for pr in &proven {
+        for cl in pr.claims.iter().filter(|c| c.kind == "law") {
+            println!("  {:<19} {:.3e}  {}", pr.model, cl.value, cl.text);
+        }
+    }
+    println!();
+    println!("accuracy constants: {p} proven, {s} swept, {m} measured only");
+    if !errors.is_empty() {
+        bail!("{}", errors.join("\n"));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_in_the_models_notations() {
+        assert_eq!(number("7b-24").ok(), Some(7.0 * 2f64.powi(-24)));
+        assert_eq!(number("0x1.8p-1").ok(), Some(0.75));
+        assert_eq!(number("6.057e-9").ok(), Some(6.057e-9));
+        assert!(number("x").is_err());
+    }
+
+    #[test]
+    fn a_claim_must_be_the_end_of_a_goal() {
+        let model = "#! bound A 1b-3 what\n{ x in [0, 1] -> y in [0, 1b-3] }";
+        let (c, _) = claims(Path::new("m.g"), model).expect("claim");
+        assert_eq!((c[0].name.as_str(), c[0].value), ("A", 0.125));
+        let wrong = "#! bound A 1b-4 what\n{ x in [0, 1] -> y in [0, 1b-3] }";
+        assert!(claims(Path::new("m.g"), wrong).is_err());
+    }
+
+    #[test]
+    fn constants_and_how_they_are_known() {
+        let text = "\nmod backend {\n    pub const B: f32 = 2.5e-7; // x\n}\n\n/// B's doc.\n/// Known: measured over draws.\npub const B: f32 = backend::B;\n/// A's doc.\n/// Known: proven: a.g.\npub const A: f32 = 1.0; // y\npub const C: f32 = 3.0;\n";
+        let c = constants(text).expect("constants");
+        let got: Vec<_> = c
+            .iter()
+            .map(|c| (c.name.as_str(), c.value, c.known.as_str()))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                ("B", 2.5e-7f32 as f64, "measured"),
+                ("A", 1.0, "proven"),
+                ("C", 3.0, "")
+            ]
+        );
+    }
+}
