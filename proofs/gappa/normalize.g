@@ -1,6 +1,7 @@
 # normalize / try_normalize (src/quat.rs) through scale_for_squares and
 # ScaledSquares::unit (src/float/norm.rs), the branch without rescaling:
-# s = a a + b b + c c + d d left to right, n = sqrt(s), each component / n.
+# s = a a + b b + c c + d d left to right, n = sqrt(s), each component / n;
+# a, b, c, d are x, y, z, w, the order of Quat::to_array that the code sums.
 # f32, round to nearest even.
 #
 # Domain: the four components scaled by an exact power of four so that

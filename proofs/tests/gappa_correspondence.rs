@@ -427,8 +427,10 @@ fn normalize_is_normalize_g_in_each_branch() {
             v.map(|c| scale.run(&[f64::from(c)])[name])
         };
         let out = m.run(&scaled);
-        let n = quat(v).normalize();
-        for (name, c) in [("ca", n.w), ("cb", n.x), ("cc", n.y), ("cd", n.z)] {
+        // The code sums the squares in the order of `to_array`, x, y, z, w:
+        // the model's a, b, c, d.
+        let n = Quat::from_array(v).normalize();
+        for (name, c) in [("ca", n.x), ("cb", n.y), ("cc", n.z), ("cd", n.w)] {
             check(&m, &out, name, c, &v);
         }
     }
