@@ -10,6 +10,7 @@
 
 use super::{EulerRot, Quat};
 use crate::matrix::Matrix4;
+use crate::matrix3::Matrix3;
 use crate::vec::Cvec3;
 
 impl Quat {
@@ -184,6 +185,189 @@ impl Quat {
         } else {
             Self::from_rotation_arc(from, to)
         }
+    }
+
+    /// `v` rotated, nalgebra's `transform_vector` (which takes `&v`): the
+    /// same as `self * v`, with its preconditions and accuracy.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::from_rotation_z(0.5);
+    /// assert_eq!(q.transform_vector(Cvec3::X), q * Cvec3::X);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn transform_vector(self, v: Cvec3) -> Cvec3 {
+        self * v
+    }
+
+    /// `p` rotated about the origin, nalgebra's `transform_point`: for a
+    /// rotation, the same as [`transform_vector`](Self::transform_vector).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::from_rotation_z(0.5);
+    /// assert_eq!(q.transform_point(Cvec3::Y), q * Cvec3::Y);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn transform_point(self, p: Cvec3) -> Cvec3 {
+        self * p
+    }
+
+    /// `v` rotated back, `self.inv() * v`: nalgebra's
+    /// `inverse_transform_vector`.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::from_rotation_z(0.5);
+    /// assert!((q.inverse_transform_vector(q * Cvec3::X) - Cvec3::X).norm() < 1e-6);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn inverse_transform_vector(self, v: Cvec3) -> Cvec3 {
+        self.inv() * v
+    }
+
+    /// `p` rotated back about the origin, nalgebra's
+    /// `inverse_transform_point`: as
+    /// [`inverse_transform_vector`](Self::inverse_transform_vector).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::from_rotation_y(1.0);
+    /// assert!((q.inverse_transform_point(q * Cvec3::Z) - Cvec3::Z).norm() < 1e-6);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn inverse_transform_point(self, p: Cvec3) -> Cvec3 {
+        self.inv() * p
+    }
+
+    /// The rotation of a frame whose +z axis points along `dir` and whose y
+    /// axis is as close to `up` as that allows: nalgebra's
+    /// `UnitQuaternion::face_towards`, the rotation of
+    /// [`RigTForm::face_towards`](crate::RigTForm::face_towards) (with its
+    /// preconditions and accuracy).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::face_towards(Cvec3::X, Cvec3::Y);
+    /// assert!((q * Cvec3::Z - Cvec3::X).norm() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn face_towards(dir: Cvec3, up: Cvec3) -> Self {
+        crate::RigTForm::face_towards(Cvec3::ZERO, dir, up).r
+    }
+
+    /// The rotation of the view from an eye looking along `dir`, with `up`
+    /// up: nalgebra's `UnitQuaternion::look_at_rh`, which takes `dir` onto
+    /// -z; the inverse of [`face_towards`](Self::face_towards) of `-dir`,
+    /// and the rotation of [`RigTForm::look_at_rh`](crate::RigTForm::look_at_rh).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::look_at_rh(Cvec3::X, Cvec3::Y);
+    /// assert!((q * Cvec3::X + Cvec3::Z).norm() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn look_at_rh(dir: Cvec3, up: Cvec3) -> Self {
+        crate::RigTForm::look_at(Cvec3::ZERO, dir, up).r.inv()
+    }
+
+    /// nalgebra's `scaled_axis`: here [`to_scaled_axis`](Self::to_scaled_axis).
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// let q = rigtform::Quat::from_rotation_x(0.5);
+    /// assert_eq!(q.scaled_axis(), q.to_scaled_axis());
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use `Quat::to_scaled_axis`")]
+    #[inline]
+    #[must_use]
+    pub fn scaled_axis(self) -> Cvec3 {
+        self.to_scaled_axis()
+    }
+
+    /// nalgebra's `axis_angle` (an `Option`): here
+    /// [`to_axis_angle`](Self::to_axis_angle), which gives the x axis and 0
+    /// for no rotation.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// let q = rigtform::Quat::from_rotation_x(0.5);
+    /// assert_eq!(q.axis_angle(), q.to_axis_angle());
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "use `Quat::to_axis_angle`, which returns (axis, angle)"
+    )]
+    #[inline]
+    #[must_use]
+    pub fn axis_angle(self) -> (Cvec3, f32) {
+        self.to_axis_angle()
+    }
+
+    /// nalgebra's `rotation_between(a, b)` (an `Option`): here
+    /// [`from_rotation_arc`](Self::from_rotation_arc), which takes any two
+    /// non-zero directions, opposite ones included.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Cvec3, Quat};
+    /// assert_eq!(Quat::rotation_between(Cvec3::X, Cvec3::Y), Quat::from_rotation_arc(Cvec3::X, Cvec3::Y));
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use `Quat::from_rotation_arc(from, to)`")]
+    #[inline]
+    #[must_use]
+    pub fn rotation_between(from: Cvec3, to: Cvec3) -> Self {
+        Self::from_rotation_arc(from, to)
+    }
+
+    /// nalgebra's `from_rotation_matrix`: here [`from_mat3`](Self::from_mat3)
+    /// (or [`from_matrix`](Self::from_matrix) for a `Matrix4`).
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Matrix3, Quat};
+    /// let m = Matrix3::from_quat(Quat::from_rotation_y(0.4));
+    /// assert_eq!(Quat::from_rotation_matrix(&m), Quat::from_mat3(m));
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use `Quat::from_mat3(m)` (by value)")]
+    #[inline]
+    #[must_use]
+    pub fn from_rotation_matrix(m: &Matrix3) -> Self {
+        Self::from_mat3(*m)
+    }
+
+    /// nalgebra's `to_rotation_matrix`: here `Matrix3::from_quat(q)`.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Matrix3, Quat};
+    /// let q = Quat::from_rotation_y(0.4);
+    /// assert_eq!(q.to_rotation_matrix(), Matrix3::from_quat(q));
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use `Matrix3::from_quat(q)`")]
+    #[inline]
+    #[must_use]
+    pub fn to_rotation_matrix(self) -> Matrix3 {
+        Matrix3::from_quat(self)
+    }
+
+    /// nalgebra's `to_homogeneous`: here `Matrix4::from_quat(q)`.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Matrix4, Quat};
+    /// let q = Quat::from_rotation_y(0.4);
+    /// assert_eq!(q.to_homogeneous(), Matrix4::from_quat(q));
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use `Matrix4::from_quat(q)`")]
+    #[inline]
+    #[must_use]
+    pub fn to_homogeneous(self) -> Matrix4 {
+        Matrix4::from_quat(self)
     }
 
     /// glam's and nalgebra's `inverse`: the notes call it `inv`.
@@ -382,6 +566,37 @@ mod tests {
             let (r, p, y) = ours.euler_angles();
             let (nr, np, ny) = theirs.euler_angles();
             assert!((r - nr).abs() < 1e-3 && (p - np).abs() < 1e-3 && (y - ny).abs() < 1e-3);
+            let w = Cvec3::new(-0.5, 2.0, 0.25);
+            let nw = na::Vector3::new(w.x, w.y, w.z);
+            let close =
+                |u: Cvec3, v: na::Vector3<f32>| (u - Cvec3::new(v.x, v.y, v.z)).norm() < 1e-5;
+            assert!(close(a.transform_vector(w), na_a.transform_vector(&nw)));
+            assert!(close(
+                a.inverse_transform_vector(w),
+                na_a.inverse_transform_vector(&nw)
+            ));
+            let np = na::Point3::new(w.x, w.y, w.z);
+            assert!(close(
+                a.transform_point(w),
+                na_a.transform_point(&np).coords
+            ));
+            assert!(close(
+                a.inverse_transform_point(w),
+                na_a.inverse_transform_point(&np).coords
+            ));
+            let up = Cvec3::new(0.1, 1.0, -0.2);
+            if v.normalize().cross(up.normalize()).norm() > 0.1 {
+                let (nv, nu) = (
+                    na::Vector3::new(v.x, v.y, v.z),
+                    na::Vector3::new(up.x, up.y, up.z),
+                );
+                let theirs = from_na(na::UnitQuaternion::face_towards(&nv, &nu));
+                assert!(Quat::face_towards(v, up).angle_to(theirs) < 1e-5);
+                let theirs = from_na(na::UnitQuaternion::look_at_rh(&nv, &nu));
+                assert!(Quat::look_at_rh(v, up).angle_to(theirs) < 1e-5);
+            }
+            assert_eq!(a.scaled_axis(), a.to_scaled_axis());
+            assert!(close(a.scaled_axis(), na_a.scaled_axis()));
             let m = Matrix4::from_quat(a);
             let from_glam = glam::Quat::from_mat4(&glam::Mat4::from_cols_array(&m.to_cols_array()));
             assert!(Quat::from_mat4(&m).angle_to(Quat::from_array(from_glam.to_array())) < 1e-5);
