@@ -245,6 +245,57 @@ impl Cvec3 {
         self.x.is_finite() && self.y.is_finite() && self.z.is_finite()
     }
 
+    /// `self` mirrored in the plane through the origin with unit normal
+    /// `normal`: `self - 2 (self . normal) normal` (glam's `reflect`).
+    ///
+    /// # Preconditions
+    ///
+    /// `normal` is of unit length (otherwise the result is not a mirror
+    /// image).
+    ///
+    /// ```
+    /// use rigtform::Cvec3;
+    /// assert_eq!(Cvec3::new(1.0, -1.0, 0.0).reflect(Cvec3::Y), Cvec3::new(1.0, 1.0, 0.0));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn reflect(self, normal: Self) -> Self {
+        self - normal * (2.0 * self.dot(normal))
+    }
+
+    /// `self` with `x` replaced (glam's `with_x`).
+    ///
+    /// ```
+    /// assert_eq!(rigtform::Cvec3::ONE.with_x(5.0).x, 5.0);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn with_x(self, x: f32) -> Self {
+        Self::new(x, self.y, self.z)
+    }
+
+    /// `self` with `y` replaced (glam's `with_y`).
+    ///
+    /// ```
+    /// assert_eq!(rigtform::Cvec3::ONE.with_y(5.0).y, 5.0);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn with_y(self, y: f32) -> Self {
+        Self::new(self.x, y, self.z)
+    }
+
+    /// `self` with `z` replaced (glam's `with_z`).
+    ///
+    /// ```
+    /// assert_eq!(rigtform::Cvec3::ONE.with_z(5.0).z, 5.0);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn with_z(self, z: f32) -> Self {
+        Self::new(self.x, self.y, z)
+    }
+
     /// The homogeneous 4-vector `[x, y, z, w]` (glam's `Vec3::extend`):
     /// `w = 1` for a point ([`Cvec4::from_point`]), `w = 0` for a vector
     /// ([`Cvec4::from_vector`]).
@@ -769,6 +820,73 @@ macro_rules! everyday {
         impl $t {
             /// Every component 1.
             pub const ONE: Self = Self { $first: 1.0 $(, $rest: 1.0)* };
+
+            /// The sum of the components, left to right (glam's
+            /// `element_sum`).
+            ///
+            /// ```
+            #[doc = concat!("assert_eq!(rigtform::", stringify!($t), "::ONE.element_sum(), ", stringify!($t), "::ONE.dot(rigtform::", stringify!($t), "::ONE));")]
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn element_sum(self) -> f32 {
+                self.$first $(+ self.$rest)*
+            }
+
+            /// The product of the components, left to right (glam's
+            /// `element_product`).
+            ///
+            /// ```
+            #[doc = concat!("assert_eq!(rigtform::", stringify!($t), "::splat(2.0).element_product(), 2f32.powi(rigtform::", stringify!($t), "::ONE.element_sum() as i32));")]
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn element_product(self) -> f32 {
+                self.$first $(* self.$rest)*
+            }
+
+            /// The point half way, `(self + other) / 2` evaluated as
+            /// `self * 0.5 + other * 0.5`, which cannot overflow for finite
+            /// inputs (glam's `midpoint`).
+            ///
+            /// ```
+            #[doc = concat!("use rigtform::", stringify!($t), ";")]
+            #[doc = concat!("assert_eq!(", stringify!($t), "::ZERO.midpoint(", stringify!($t), "::splat(2.0)), ", stringify!($t), "::ONE);")]
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn midpoint(self, other: Self) -> Self {
+                self * 0.5 + other * 0.5
+            }
+
+            /// `1 / |self|` (glam's `length_recip`): infinite for the zero
+            /// vector, NaN for a NaN component.
+            ///
+            /// ```
+            #[doc = concat!("assert_eq!(rigtform::", stringify!($t), "::splat(0.5).length_recip() , 2.0 / rigtform::", stringify!($t), "::ONE.norm());")]
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn length_recip(self) -> f32 {
+                1.0 / self.norm()
+            }
+
+            /// `true` if the norm is within
+            /// [`accuracy::IS_NORMALIZED_TOLERANCE`](crate::accuracy::IS_NORMALIZED_TOLERANCE)
+            /// of 1, as [`Quat::is_normalized`](crate::Quat::is_normalized)
+            /// (glam's `is_normalized`); `false` for NaN or infinite
+            /// components.
+            ///
+            /// ```
+            #[doc = concat!("use rigtform::", stringify!($t), ";")]
+            #[doc = concat!("assert!(", stringify!($t), "::X.is_normalized());")]
+            #[doc = concat!("assert!(!", stringify!($t), "::ONE.is_normalized());")]
+            /// ```
+            #[inline]
+            #[must_use]
+            pub fn is_normalized(self) -> bool {
+                (self.norm_squared() - 1.0).abs() <= 2.0 * crate::accuracy::IS_NORMALIZED_TOLERANCE
+            }
 
             /// The vector with every component `v` (glam's `splat`).
             ///
@@ -1485,5 +1603,49 @@ mod tests {
             let w = Cvec4::new(1.0, 2.0, 2.0, 4.0);
             assert_eq!((w.magnitude(), w.magnitude_squared()), (5.0, 25.0));
         }
+    }
+
+    /// glam's spellings give glam's results: bit for bit where the
+    /// operations are the same, within a few ulps where glam orders them
+    /// otherwise.
+    #[test]
+    fn element_sum_product_midpoint_reflect_and_with_as_glam() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand::rngs::StdRng::seed_from_u64(36);
+        for _ in 0..10_000 {
+            let mut c = || rng.random_range(-10.0f32..10.0);
+            let (a, b) = (Cvec3::new(c(), c(), c()), Cvec3::new(c(), c(), c()));
+            let (ga, gb) = (
+                glam::Vec3::from_array(a.to_array()),
+                glam::Vec3::from_array(b.to_array()),
+            );
+            assert_eq!(a.element_sum(), ga.element_sum());
+            assert_eq!(a.element_product(), ga.element_product());
+            assert!((a.midpoint(b) - Cvec3::from_array(ga.midpoint(gb).to_array())).norm() <= 1e-5);
+            let n = b.normalize();
+            let gn = glam::Vec3::from_array(n.to_array());
+            assert!((a.reflect(n) - Cvec3::from_array(ga.reflect(gn).to_array())).norm() <= 1e-5);
+            assert!((a.length_recip() - ga.length_recip()).abs() <= 1e-6 * ga.length_recip());
+            assert_eq!(n.is_normalized(), gn.is_normalized());
+            assert_eq!(a.with_x(1.5).to_array(), ga.with_x(1.5).to_array());
+            assert_eq!(a.with_y(1.5).to_array(), ga.with_y(1.5).to_array());
+            assert_eq!(a.with_z(1.5).to_array(), ga.with_z(1.5).to_array());
+            let (p, q) = (
+                Cvec4::new(c(), c(), c(), c()),
+                Cvec4::new(c(), c(), c(), c()),
+            );
+            let (gp, gq) = (
+                glam::Vec4::from_array(p.to_array()),
+                glam::Vec4::from_array(q.to_array()),
+            );
+            // glam's Vec4 adds and multiplies its lanes pairwise.
+            let scale = p.abs().element_sum();
+            assert!((p.element_sum() - gp.element_sum()).abs() <= 4.0 * f32::EPSILON * scale);
+            let product = p.element_product();
+            assert!((product - gp.element_product()).abs() <= 4.0 * f32::EPSILON * product.abs());
+            assert!((p.midpoint(q) - Cvec4::from_array(gp.midpoint(gq).to_array())).norm() <= 1e-5);
+        }
+        assert!(!Cvec3::NAN.is_normalized());
+        assert_eq!(Cvec3::ZERO.length_recip(), f32::INFINITY);
     }
 }
