@@ -825,7 +825,8 @@ macro_rules! everyday {
             /// `element_sum`).
             ///
             /// ```
-            #[doc = concat!("assert_eq!(rigtform::", stringify!($t), "::ONE.element_sum(), ", stringify!($t), "::ONE.dot(rigtform::", stringify!($t), "::ONE));")]
+            #[doc = concat!("use rigtform::", stringify!($t), ";")]
+            #[doc = concat!("assert_eq!(", stringify!($t), "::ONE.element_sum(), ", stringify!($t), "::ONE.dot(", stringify!($t), "::ONE));")]
             /// ```
             #[inline]
             #[must_use]
