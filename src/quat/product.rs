@@ -34,9 +34,10 @@ fn by_formula(a: Quat, b: Quat) -> Quat {
     )
 }
 
-/// [`by_formula`] by columns in SSE registers: `a.w [bw bx by bz]`, plus
-/// `a.x [-bx bw -bz by]`, plus `a.y [-by bz bw -bx]`, plus
-/// `a.z [-bz -by bx bw]`, each column a shuffle of `b` with sign bits
+/// [`by_formula`] by columns in SSE registers, lanes in the order of the
+/// memory layout, `x, y, z, w`: `a.w [bx by bz bw]`, plus
+/// `a.x [bw -bz by -bx]`, plus `a.y [bz bw -bx -by]`, plus
+/// `a.z [-by bx bw -bz]`, each column a shuffle of `b` with sign bits
 /// flipped by an exclusive or. One of the few places of the crate's
 /// `unsafe` code (src/lib.rs lists them).
 ///
@@ -57,21 +58,22 @@ fn by_lanes(a: Quat, b: Quat) -> Quat {
     // registers only, reading and writing no memory, and SSE arithmetic
     // cannot fault with the default MXCSR (exceptions masked).
     unsafe {
-        // `_mm_set_ps` takes the lanes from the highest: lane 0 is `w`.
-        let b_wxyz = _mm_set_ps(b.z, b.y, b.x, b.w);
+        // `_mm_set_ps` takes the lanes from the highest: lane 0 is `x`, as
+        // in memory.
+        let b_xyzw = _mm_set_ps(b.w, b.z, b.y, b.x);
         // `_mm_shuffle_ps::<imm>`: lane i takes lane (imm >> 2i) & 3.
-        let b_xwzy = _mm_shuffle_ps::<0b10_11_00_01>(b_wxyz, b_wxyz);
-        let b_yzwx = _mm_shuffle_ps::<0b01_00_11_10>(b_wxyz, b_wxyz);
-        let b_zyxw = _mm_shuffle_ps::<0b00_01_10_11>(b_wxyz, b_wxyz);
+        let b_wzyx = _mm_shuffle_ps::<0b00_01_10_11>(b_xyzw, b_xyzw);
+        let b_zwxy = _mm_shuffle_ps::<0b01_00_11_10>(b_xyzw, b_xyzw);
+        let b_yxwz = _mm_shuffle_ps::<0b10_11_00_01>(b_xyzw, b_xyzw);
         // -0.0 in a lane flips that lane's sign bit.
-        let signs_x = _mm_set_ps(0.0, -0.0, 0.0, -0.0);
-        let signs_y = _mm_set_ps(-0.0, 0.0, 0.0, -0.0);
-        let signs_z = _mm_set_ps(0.0, 0.0, -0.0, -0.0);
-        let mut r = _mm_mul_ps(_mm_set1_ps(a.w), b_wxyz);
-        r = _mm_add_ps(r, _mm_mul_ps(_mm_set1_ps(a.x), _mm_xor_ps(b_xwzy, signs_x)));
-        r = _mm_add_ps(r, _mm_mul_ps(_mm_set1_ps(a.y), _mm_xor_ps(b_yzwx, signs_y)));
-        r = _mm_add_ps(r, _mm_mul_ps(_mm_set1_ps(a.z), _mm_xor_ps(b_zyxw, signs_z)));
-        Quat::from_wxyz(
+        let signs_x = _mm_set_ps(-0.0, 0.0, -0.0, 0.0);
+        let signs_y = _mm_set_ps(-0.0, -0.0, 0.0, 0.0);
+        let signs_z = _mm_set_ps(-0.0, 0.0, 0.0, -0.0);
+        let mut r = _mm_mul_ps(_mm_set1_ps(a.w), b_xyzw);
+        r = _mm_add_ps(r, _mm_mul_ps(_mm_set1_ps(a.x), _mm_xor_ps(b_wzyx, signs_x)));
+        r = _mm_add_ps(r, _mm_mul_ps(_mm_set1_ps(a.y), _mm_xor_ps(b_zwxy, signs_y)));
+        r = _mm_add_ps(r, _mm_mul_ps(_mm_set1_ps(a.z), _mm_xor_ps(b_yxwz, signs_z)));
+        Quat::from_xyzw(
             _mm_cvtss_f32(r),
             _mm_cvtss_f32(_mm_shuffle_ps::<0b01_01_01_01>(r, r)),
             _mm_cvtss_f32(_mm_shuffle_ps::<0b10_10_10_10>(r, r)),
