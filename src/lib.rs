@@ -222,6 +222,8 @@ mod matrix;
 mod matrix3;
 mod quat;
 mod rigtform;
+#[cfg(test)]
+mod test_draws;
 mod vec;
 
 /// The float kernels that every transcendental call goes through,

@@ -388,13 +388,7 @@ mod tests {
         nalgebra::Matrix3::from_column_slice(&m.to_cols_array().map(f64::from))
     }
 
-    /// 200,000 draws, or `RIGTFORM_DRAWS`.
-    fn draws() -> usize {
-        std::env::var("RIGTFORM_DRAWS")
-            .ok()
-            .and_then(|d| d.parse().ok())
-            .unwrap_or(200_000)
-    }
+    use crate::test_draws::count as draws;
 
     #[test]
     fn inverse_and_determinant_are_within_their_bounds_of_nalgebra_in_f64() {

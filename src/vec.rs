@@ -1335,14 +1335,7 @@ mod tests {
         ) * scale
     }
 
-    /// 200,000 draws, or `RIGTFORM_DRAWS` (the bounds in `accuracy` were
-    /// measured with 10,000,000).
-    fn draws() -> usize {
-        std::env::var("RIGTFORM_DRAWS")
-            .ok()
-            .and_then(|d| d.parse().ok())
-            .unwrap_or(200_000)
-    }
+    use crate::test_draws::count as draws;
 
     #[test]
     fn everyday_methods_agree_with_glam() {

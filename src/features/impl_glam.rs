@@ -162,16 +162,7 @@ mod tests {
         a.map(f32::to_bits)
     }
 
-    fn random_quat(rng: &mut rand::rngs::StdRng) -> Quat {
-        Quat::from_axis_angle(
-            Cvec3::new(
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            ),
-            rng.random_range(-4.0..4.0),
-        )
-    }
+    use crate::test_draws::unit_quat as random_quat;
 
     /// The three spellings that turned rotations the wrong way while the
     /// crate kept `w` first: each now gives glam's rotation, bit for bit.

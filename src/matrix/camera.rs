@@ -168,13 +168,7 @@ mod tests {
         nalgebra::Point3::new(v.x.into(), v.y.into(), v.z.into())
     }
 
-    /// 200,000 draws, or `RIGTFORM_DRAWS`.
-    fn draws() -> usize {
-        std::env::var("RIGTFORM_DRAWS")
-            .ok()
-            .and_then(|d| d.parse().ok())
-            .unwrap_or(200_000)
-    }
+    use crate::test_draws::count as draws;
 
     fn cube(rng: &mut impl Rng, half: f32) -> Cvec3 {
         Cvec3::new(

@@ -269,27 +269,9 @@ mod tests {
         Cvec3::new(v.x, v.y, v.z)
     }
 
-    /// 200,000 draws, or `RIGTFORM_DRAWS`.
-    fn draws() -> usize {
-        std::env::var("RIGTFORM_DRAWS")
-            .ok()
-            .and_then(|d| d.parse().ok())
-            .unwrap_or(200_000)
-    }
+    use crate::test_draws::count as draws;
 
-    fn unit_quat(rng: &mut impl Rng) -> Quat {
-        loop {
-            let q = Quat::from_xyzw(
-                rng.random_range(-1.0..=1.0),
-                rng.random_range(-1.0..=1.0),
-                rng.random_range(-1.0..=1.0),
-                rng.random_range(-1.0..=1.0),
-            );
-            if (0.1..=1.0).contains(&q.norm()) {
-                return q.normalize();
-            }
-        }
-    }
+    use crate::test_draws::unit_quat;
 
     /// A scale of magnitude in [1e-3, 1e3], log-uniform.
     fn scale(rng: &mut impl Rng) -> f32 {

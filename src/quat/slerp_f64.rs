@@ -157,21 +157,7 @@ pub(super) mod tests {
     use super::*;
     use rand::{Rng, SeedableRng};
 
-    /// A random unit quaternion (normalized from a cube, away from its
-    /// centre).
-    pub(in crate::quat) fn unit(rng: &mut impl Rng) -> Quat {
-        loop {
-            let q = Quat::from_wxyz(
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            );
-            if q.norm_squared() > 0.01 {
-                return q.normalize();
-            }
-        }
-    }
+    pub(in crate::quat) use crate::test_draws::unit_quat as unit;
 
     /// Ordinary pairs, random unit quaternions with `alpha` in (0, 1], are
     /// the f64 evaluation's, and `slerp` returns its result.

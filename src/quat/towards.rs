@@ -111,20 +111,10 @@ impl Quat {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Cvec3;
     use core::f32::consts::PI;
     use rand::{Rng, SeedableRng};
 
-    fn random_unit(rng: &mut rand::rngs::StdRng) -> Quat {
-        Quat::from_axis_angle(
-            Cvec3::new(
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-                rng.random_range(-1.0..1.0),
-            ),
-            rng.random_range(-PI..PI),
-        )
-    }
+    use crate::test_draws::unit_quat as random_unit;
 
     /// glam's `slerp_long` on the same pairs, of either sign: the arc the
     /// signs give, the long way where the dot product is negative.
