@@ -23,10 +23,12 @@ impl Quat {
     ///
     /// # Accuracy
     ///
-    /// That of one product and one [`pow`](Self::pow): within
-    /// [`accuracy::POW_MAX_ANGLE_ERROR`](crate::accuracy::POW_MAX_ANGLE_ERROR)
-    /// plus twice [`accuracy::MUL_MAX_ANGLE_ERROR`](crate::accuracy::MUL_MAX_ANGLE_ERROR)
-    /// for unit inputs and `alpha` in [0, 1].
+    /// That of two products and one [`pow`](Self::pow), whose error
+    /// ([`accuracy::POW_MAX_ANGLE_ERROR`](crate::accuracy::POW_MAX_ANGLE_ERROR))
+    /// is per radian turned, and the long way turns up to 2 pi. No bound of
+    /// its own is measured: the tests hold it to glam's `slerp_long` within
+    /// 2e-5 rad, and its turn to `alpha` of the long angle within 2e-5 rad,
+    /// on 10,000 draws.
     ///
     /// ```
     /// use core::f32::consts::PI;
@@ -55,9 +57,11 @@ impl Quat {
     ///
     /// # Accuracy
     ///
-    /// The angle turned is `max_angle` (or the whole angle between them)
-    /// within that of [`angle_to`](Self::angle_to) and
-    /// [`slerp`](Self::slerp).
+    /// The angle turned is `max_angle` (or the whole angle between them, or
+    /// what is left to pi when turning away) up to the errors of
+    /// [`angle_to`](Self::angle_to) and [`slerp`](Self::slerp): within
+    /// 1e-5 rad, and within 2e-5 rad of glam's `rotate_towards`, on 10,000
+    /// draws in the tests (no bound of its own is measured).
     ///
     /// ```
     /// use rigtform::Quat;
