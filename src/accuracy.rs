@@ -128,17 +128,17 @@ pub const SIN_COS_NARROW_MAX_ULP: f32 = 1.0; // 0.858 at 2.3555665
 /// Known: swept: every finite f32 beyond 3 pi/4 (`exhaustive_kernel_sweep`).
 pub const SIN_COS_MAX_ULP: f32 = 1.25; // 0.985 at 2.3279488e23
 /// Relative error of the f64 angle kernel of slerp on x86-64 and AArch64
-/// (`float/double.rs`): pairs `(t, 1)` and `(1, t)` for every f32 `t` in
+/// (`quat/slerp/kernels_f64.rs`): pairs `(t, 1)` and `(1, t)` for every f32 `t` in
 /// [2^-30, 1].
 ///
 /// Known: swept: every f32 `t` of [2^-30, 1] (`exhaustive_kernel_sweep` in
-/// `float/double.rs`). `proofs/gappa/angle_f64.g` proves 7.64e-8 for the
+/// `quat/slerp/kernels_f64.rs`). `proofs/gappa/angle_f64.g` proves 7.64e-8 for the
 /// pairs `(t, 1)` and `angle_f64_above.g` 1.337e-7 for the pairs `(1, t)`
 /// (looser), with Sollya's bound of the polynomial's approximation error
 /// (1.67e-8, `angle_f64.sollya`).
 pub const ANGLE_F64_MAX_REL_ERROR: f32 = 9.0e-8; // 7.552e-8 at t = 0.2502991
 /// Relative error of the f64 sine kernel of slerp on x86-64 and AArch64
-/// (`float/double.rs`), for every f32 in [2^-30, pi/2].
+/// (`quat/slerp/kernels_f64.rs`), for every f32 in [2^-30, pi/2].
 ///
 /// Known: proven: `proofs/gappa/sin_f64.g` proves 6.057e-9 for every f64 of
 /// [9.29e-10, 1.5708]: Sollya bounds the polynomial's approximation error by

@@ -11,11 +11,12 @@
 //! | `float/reduce.rs` | reduction by quarter turns for every finite f32 (Payne and Hanek, in integers), into a head and a tail | checked through the sine and cosine beyond 3 pi/4 ([`SIN_COS_MAX_ULP`](crate::accuracy::SIN_COS_MAX_ULP)) |
 //! | `float/sqrt.rs` | the processor's square root instruction (Arm hard-float `vsqrt.f32`, x86-64 `sqrtss`, AArch64 `fsqrt`, the last two in a form a loop can vectorize), libm's `sqrtf` elsewhere | 0.5 ulp |
 //! | `float/norm.rs` | the overflow- and underflow-free sum of squares behind every `norm` and `normalize` | 2 ulp |
-//! | `float/double.rs` | on x86-64 and AArch64 only: slerp's angle (`atan2` of a root, a degree-17 odd polynomial on [0, 1]) and sines (on [0, pi/2], degree 9) in f64 | [`ANGLE_F64_MAX_REL_ERROR`](crate::accuracy::ANGLE_F64_MAX_REL_ERROR), [`SIN_F64_MAX_REL_ERROR`](crate::accuracy::SIN_F64_MAX_REL_ERROR) |
 //!
-//! The default kernels evaluate nothing in f64 but on 64-bit desktop
-//! targets (`float/double.rs`), so on a Cortex-M4F (single-precision FPU)
-//! no soft-float helper is linked. Their
+//! The one exception is slerp's own pair of f64 kernels, its angle and
+//! sines on x86-64 and AArch64, which live with slerp
+//! (`quat/slerp/kernels_f64.rs`): nothing else evaluates them. Nothing
+//! here is evaluated in f64, so on a Cortex-M4F (single-precision FPU) no
+//! soft-float helper is linked. Their
 //! coefficients come from `tools/minimax.py` (Remez exchange in multiple
 //! precision), and the tests of each file sweep every 997th f32 of its
 //! range against f64 (every f32, with `exhaustive_kernel_sweep`). The tangent, used only by
@@ -24,15 +25,13 @@
 
 mod atan2;
 mod bits;
-#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-mod double;
 mod head_tail;
 mod norm;
 mod reduce;
 mod sin_cos;
 mod sqrt;
 #[cfg(test)]
-mod sweep;
+pub(crate) mod sweep;
 
 /// What the portable lanes of `Quat::slerp_slice` use besides.
 #[cfg(all(
@@ -44,13 +43,6 @@ mod sweep;
 ))]
 pub(crate) use bits::select;
 pub(crate) use bits::SIGN;
-/// What the vectorizable lanes of `Quat::slerp_slice` share with the single
-/// call.
-#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-pub use double::{atan2_of_root, sin_to_quarter_turn};
-/// The coefficients the x86-64 lanes of `Quat::slerp_slice` evaluate.
-#[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
-pub(crate) use double::{ATAN as ATAN_F64, SIN as SIN_F64};
 #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 pub(crate) use norm::SQUARES_UNDERFLOW;
 pub(crate) use norm::{needs_no_rescaling, scale_for_squares, ScaledSquares};

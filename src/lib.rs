@@ -187,9 +187,9 @@
 // (`vector_unit_sqrt`) on x86-64 with SSE and AArch64 with NEON; and on
 // x86-64 with SSE the quaternion product in SSE registers
 // (`product::by_lanes` in src/quat/product.rs) and the slice APIs' vector
-// lanes (the `Isa` implementations of src/quat/slerp_slice/sse2.rs and,
-// with AVX, avx.rs: one intrinsic per operation; and `lerp_rig_tforms` in
-// src/quat/slerp_slice/steps.rs, which sees RigTForms as f32s). There the
+// lanes (the `Isa` implementations of src/quat/slerp/slice/sse2.rs and,
+// with AVX, avx.rs: one intrinsic per operation; and `lerp_all_components`
+// in src/rigtform/slice.rs, which sees RigTForms as f32s). There the
 // lint is `deny` and those items allow it; elsewhere it is `forbid`.
 // With the `bytemuck` feature, bytemuck's derive macros write `unsafe impl
 // Pod` and `Zeroable` for the plain-f32 types after checking them (`repr(C)`,
@@ -239,7 +239,7 @@ pub mod kani_kernels {
     /// slerp's f64 angle and sine, which `proofs/gappa/angle_f64.g`,
     /// `angle_f64_above.g` and `sin_f64.g` model.
     #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-    pub use crate::float::{atan2_of_root, sin_to_quarter_turn};
+    pub use crate::quat::kernels_f64::{atan2_of_root, sin_to_quarter_turn};
 }
 
 pub use matrix::Matrix4;

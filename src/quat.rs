@@ -19,9 +19,12 @@ use core::ops::{Mul, MulAssign, Neg};
 
 use crate::vec::{Cvec3, Cvec4};
 
-#[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
-pub(crate) use slerp_slice::lerp_rig_tforms;
-pub(crate) use slerp_slice::{slerp_slice_by, Slerped};
+#[cfg(all(
+    any(kani, feature = "kernel-contracts"),
+    any(target_arch = "x86_64", target_arch = "aarch64")
+))]
+pub(crate) use slerp::kernels_f64;
+pub(crate) use slerp::{slerp_slice_by, Slerped};
 
 pub use euler::EulerRot;
 
@@ -260,16 +263,13 @@ impl Neg for Quat {
 
 mod basics;
 
-mod interpolate;
-
 mod power;
 
+mod interpolate;
+
+mod slerp;
+
 mod towards;
-
-mod slerp_slice;
-
-#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-mod slerp_f64;
 
 mod euler;
 

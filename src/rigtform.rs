@@ -14,6 +14,7 @@ use crate::vec::{Cvec3, Cvec4};
 mod catmull_rom;
 mod look_at;
 mod other_names;
+mod slice;
 
 pub use other_names::NotRigid;
 
@@ -279,26 +280,6 @@ impl RigTForm {
     /// ```
     pub fn interpolate_slice(starts: &[Self], ends: &[Self], alpha: f32, out: &mut [Self]) {
         crate::quat::slerp_slice_by(starts, ends, alpha, out);
-    }
-}
-
-impl crate::quat::Slerped for RigTForm {
-    #[inline(always)]
-    fn rotation(&self) -> &Quat {
-        &self.r
-    }
-    #[inline(always)]
-    fn rotation_mut(&mut self) -> &mut Quat {
-        &mut self.r
-    }
-    #[inline(always)]
-    fn lerp_rest(start: &Self, end: &Self, alpha: f32, out: &mut Self) {
-        out.t = start.t.lerp(end.t, alpha);
-    }
-    #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
-    #[inline(always)]
-    fn lerp_rest_of(starts: &[Self], ends: &[Self], alpha: f32, out: &mut [Self]) {
-        crate::quat::lerp_rig_tforms(starts, ends, alpha, out);
     }
 }
 

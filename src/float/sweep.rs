@@ -3,24 +3,24 @@
 //! against its bound (as libm tests its own kernels).
 
 /// Distance from `got` to the exact `want`, in ulps of `want` rounded to f32.
-pub(super) fn ulps(got: f32, want: f64) -> f64 {
+pub(crate) fn ulps(got: f32, want: f64) -> f64 {
     let w = want as f32;
     let ulp = (f32::from_bits(w.abs().to_bits() + 1) - w.abs()) as f64;
     (got as f64 - want).abs() / ulp
 }
 
 /// `n` points evenly spread over [lo, hi], endpoints included.
-pub(super) fn spread(lo: f64, hi: f64, n: usize) -> impl Iterator<Item = f32> {
+pub(crate) fn spread(lo: f64, hi: f64, n: usize) -> impl Iterator<Item = f32> {
     (0..=n).map(move |i| (lo + (hi - lo) * i as f64 / n as f64) as f32)
 }
 
 /// The step of the kernel sweeps every test run does: every 997th f32 of
 /// a range (about a million arguments per range). The exhaustive sweeps,
 /// run by hand, take every f32 (step 1).
-pub(super) const SAMPLE_STEP: usize = 997;
+pub(crate) const SAMPLE_STEP: usize = 997;
 
 /// Every `step`-th f32 from `lo` to `hi` (both included, both >= 0).
-pub(super) fn floats(lo: f32, hi: f32, step: usize) -> impl Iterator<Item = f32> {
+pub(crate) fn floats(lo: f32, hi: f32, step: usize) -> impl Iterator<Item = f32> {
     (lo.to_bits()..=hi.to_bits())
         .step_by(step)
         .chain([hi.to_bits()])
@@ -29,7 +29,7 @@ pub(super) fn floats(lo: f32, hi: f32, step: usize) -> impl Iterator<Item = f32>
 
 /// The largest ulp error of one kernel over a sweep, with the argument that
 /// reached it, and the bound it must stay within.
-pub(super) struct Worst {
+pub(crate) struct Worst {
     what: &'static str,
     ulps: f64,
     at: f32,
@@ -38,7 +38,7 @@ pub(super) struct Worst {
 
 impl Worst {
     /// No error seen yet for the sweep `what`, bounded by `bound` ulps.
-    pub(super) fn new(what: &'static str, bound: f32) -> Self {
+    pub(crate) fn new(what: &'static str, bound: f32) -> Self {
         Self {
             what,
             ulps: 0.0,
@@ -49,7 +49,7 @@ impl Worst {
 
     /// Records the error `ulps` at the argument `at` (a NaN error counts as
     /// the worst).
-    pub(super) fn see(&mut self, ulps: f64, at: f32) {
+    pub(crate) fn see(&mut self, ulps: f64, at: f32) {
         if ulps > self.ulps || ulps.is_nan() {
             self.ulps = ulps;
             self.at = at;
@@ -57,7 +57,7 @@ impl Worst {
     }
 
     /// Prints the maximum, and fails if it exceeds the bound.
-    pub(super) fn check(&self) {
+    pub(crate) fn check(&self) {
         std::println!(
             "{:<44} max {:.3} ulp at {:e}",
             self.what,

@@ -9,6 +9,20 @@ use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Sub, SubAssign};
 
 use super::Quat;
 
+impl Quat {
+    /// `a self + b other`, component-wise: the sum under slerp, nlerp and
+    /// blend.
+    #[inline]
+    pub(crate) fn weighted_sum(self, a: f32, other: Self, b: f32) -> Self {
+        Self::from_wxyz(
+            a * self.w + b * other.w,
+            a * self.x + b * other.x,
+            a * self.y + b * other.y,
+            a * self.z + b * other.z,
+        )
+    }
+}
+
 impl Add for Quat {
     type Output = Quat;
 

@@ -32,15 +32,15 @@
 //! sixteen registers of eight lanes, four SSE2's of four (three measured
 //! the same, six and, with AVX, three slower).
 //!
-//! [`Pair::of`]: super::super::slerp_f64::Pair::of
-//! [`Pair::applies`]: super::super::slerp_f64::Pair::applies
-//! [`Pair::slerp`]: super::super::slerp_f64::Pair::slerp
+//! [`Pair::of`]: super::super::in_f64::Pair::of
+//! [`Pair::applies`]: super::super::in_f64::Pair::applies
+//! [`Pair::slerp`]: super::super::in_f64::Pair::slerp
 
-use super::super::interpolate::NEARLY_UNIT;
-use super::super::slerp_f64::{INVERSE_SINE_SQUARED_LIMIT, NORM_SQUARED_LIMIT, SMALL_ANGLE_F64};
+use super::super::in_f64::{INVERSE_SINE_SQUARED_LIMIT, NORM_SQUARED_LIMIT, SMALL_ANGLE_F64};
+use super::super::kernels_f64::{ATAN as ATAN_F64, SIN as SIN_F64};
+use super::super::NEARLY_UNIT;
 use super::Slerped;
-use crate::float::{ATAN_F64, SIN_F64, SQUARES_UNDERFLOW};
-use crate::RigTForm;
+use crate::float::SQUARES_UNDERFLOW;
 
 /// An instruction set's registers and the operations the evaluation
 /// takes, each one instruction (or a fixed few), IEEE 754's operation on
@@ -353,50 +353,13 @@ fn evaluate<I: Isa, T: Slerped, const BLOCKS: usize, const CHAINS: usize, const 
     done
 }
 
-/// `out[i].t = starts[i].t.lerp(ends[i].t, alpha)` for many RigTForms at
-/// once: every one of their f32 components (rotations too, which are
-/// written again afterwards) as `x (1 - alpha) + y alpha`, the operations
-/// of `Cvec3::lerp`, in a loop the compiler vectorizes. One of the few
-/// places of the crate's `unsafe` code: the slices of RigTForms seen as
-/// slices of f32.
-#[allow(unsafe_code)]
-#[inline(always)]
-pub(crate) fn lerp_rig_tforms(
-    starts: &[RigTForm],
-    ends: &[RigTForm],
-    alpha: f32,
-    out: &mut [RigTForm],
-) {
-    /// The f32 components of a RigTForm.
-    const FLOATS: usize = 7;
-    const { assert!(core::mem::size_of::<RigTForm>() == 4 * FLOATS) };
-    const { assert!(core::mem::align_of::<RigTForm>() == 4) };
-    let n = starts.len().min(ends.len()).min(out.len());
-    // SAFETY: `RigTForm` is `repr(C)` of a `Cvec3` and a `Quat`, each
-    // `repr(C)` of f32s: `FLOATS` f32 with no padding and the alignment of
-    // f32 (checked above, at compile time), every bit pattern of which is
-    // a valid value, so `n` of them, which each slice has, are `n FLOATS`
-    // f32. The views borrow the slices as they are borrowed here (`out`
-    // mutably, and only through its view while that is alive).
-    let (x, y, to) = unsafe {
-        (
-            core::slice::from_raw_parts(starts.as_ptr().cast::<f32>(), n * FLOATS),
-            core::slice::from_raw_parts(ends.as_ptr().cast::<f32>(), n * FLOATS),
-            core::slice::from_raw_parts_mut(out.as_mut_ptr().cast::<f32>(), n * FLOATS),
-        )
-    };
-    for ((to, x), y) in to.iter_mut().zip(x).zip(y) {
-        *to = x * (1.0 - alpha) + y * alpha;
-    }
-}
-
 #[cfg(test)]
 mod tests {
-    use super::super::super::slerp_f64::tests::{just_past_the_small_angles, rare_pairs, unit};
+    use super::super::super::in_f64::tests::{just_past_the_small_angles, rare_pairs, unit};
     use super::super::sse2::Sse2;
     use super::super::tests::bits;
     use super::*;
-    use crate::Quat;
+    use crate::{Quat, RigTForm};
     use rand::{Rng, SeedableRng};
 
     /// A pair is done exactly where `slerp_f64` takes it, with its result,

@@ -2,7 +2,7 @@
 //! systems that blend many bones at once, equal to [`Quat::slerp`] element
 //! by element, bit for bit.
 
-use super::Quat;
+use crate::Quat;
 
 impl Quat {
     /// Slerps every pair `(starts[i], ends[i])` by the same `alpha` into
@@ -150,8 +150,6 @@ pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, o
 /// operations of an instruction set, written by hand.
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
 mod steps;
-#[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
-pub(crate) use steps::lerp_rig_tforms;
 
 /// The operations of AVX: sixteen pairs a step.
 #[cfg(all(target_arch = "x86_64", target_feature = "avx", not(kani)))]
@@ -181,8 +179,8 @@ mod lanes;
 /// What the tests of every evaluation of the slice in lanes share.
 #[cfg(all(test, any(target_arch = "x86_64", target_arch = "aarch64")))]
 mod tests {
-    use super::super::slerp_f64::tests::{rare_pairs, unit};
-    use super::Quat;
+    use super::super::in_f64::tests::{rare_pairs, unit};
+    use crate::Quat;
     use crate::{Cvec3, RigTForm};
     use rand::{Rng, SeedableRng};
 

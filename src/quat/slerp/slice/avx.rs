@@ -2,9 +2,9 @@
 //! Each operation is one intrinsic of `core::arch` (a few for the loads,
 //! stores and conversions).
 
-use super::super::Quat;
 use super::steps::Isa;
 use super::Slerped;
+use crate::Quat;
 use core::arch::x86_64::{
     __m128, __m256, __m256d, _mm256_add_pd, _mm256_add_ps, _mm256_and_pd, _mm256_and_ps,
     _mm256_andnot_ps, _mm256_blendv_pd, _mm256_castpd_ps, _mm256_castps128_ps256,

@@ -3,9 +3,9 @@
 //! `core::arch` (a few for the loads, stores, conversions and the f64
 //! select, which SSE2 builds from bitwise operations).
 
-use super::super::Quat;
 use super::steps::Isa;
 use super::Slerped;
+use crate::Quat;
 use core::arch::x86_64::{
     __m128, __m128d, _mm_add_pd, _mm_add_ps, _mm_and_pd, _mm_and_ps, _mm_andnot_pd, _mm_andnot_ps,
     _mm_cmpge_ps, _mm_cmpgt_pd, _mm_cmple_ps, _mm_cmplt_pd, _mm_cmpngt_ps, _mm_cvtpd_ps,

@@ -5,7 +5,7 @@
 //! f32 ulp. Never compiled for the microcontrollers, whose FPUs have no
 //! f64 (the f32 kernels serve them).
 
-use super::sqrt::sqrt;
+use crate::float::sqrt;
 
 /// Minimax coefficients of `(atan(u) - u) / u^3` as a polynomial in `u^2`
 /// on [0, 1], for relative error (`tools/minimax.py atan_f64`): the

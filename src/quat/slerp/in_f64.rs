@@ -12,9 +12,10 @@
 //! `phi`) the result is `sin((1 - alpha) phi) r a + sin(alpha phi) r b`,
 //! `b` negated when the dot product is negative (the notes' `cn`).
 
-use super::interpolate::{NEARLY_UNIT, SMALL_ANGLE};
-use super::Quat;
-use crate::float::{atan2_of_root, sin_to_quarter_turn, sqrt, SQUARES_UNDERFLOW};
+use super::kernels_f64::{atan2_of_root, sin_to_quarter_turn};
+use super::{NEARLY_UNIT, SMALL_ANGLE};
+use crate::float::{sqrt, SQUARES_UNDERFLOW};
+use crate::Quat;
 
 /// 2^32, the largest squared norm the evaluation takes: components below
 /// 2^16, whose products and sums of squares stay far from overflow (at

@@ -1,7 +1,7 @@
 //! The branch-free evaluation of the slice, in blocks the compiler
 //! vectorizes.
 
-use super::super::slerp_f64::{Pair, NORM_SQUARED_LIMIT, SMALL_ANGLE_F64};
+use super::super::in_f64::{Pair, NORM_SQUARED_LIMIT, SMALL_ANGLE_F64};
 use super::{Quat, Slerped};
 use crate::float::select;
 
@@ -61,7 +61,7 @@ fn in_plane(a: Quat, b: Quat, alpha: f32) -> (Quat, bool) {
 
 #[cfg(test)]
 mod tests {
-    use super::super::super::slerp_f64::tests::{just_past_the_small_angles, rare_pairs, unit};
+    use super::super::super::in_f64::tests::{just_past_the_small_angles, rare_pairs, unit};
     use super::*;
     use rand::{Rng, SeedableRng};
 
