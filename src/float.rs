@@ -34,16 +34,10 @@ mod sqrt;
 pub(crate) mod sweep;
 
 /// What the portable lanes of `Quat::slerp_slice` use besides.
-#[cfg(all(
-    any(target_arch = "x86_64", target_arch = "aarch64"),
-    any(
-        test,
-        not(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))
-    )
-))]
+#[cfg(any(portable_lanes, all(test, desktop64)))]
 pub(crate) use bits::select;
 pub(crate) use bits::SIGN;
-#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+#[cfg(desktop64)]
 pub(crate) use norm::SQUARES_UNDERFLOW;
 pub(crate) use norm::{needs_no_rescaling, scale_for_squares, ScaledSquares};
 pub(crate) use sin_cos::sin3;

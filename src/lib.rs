@@ -195,22 +195,8 @@
 // Pod` and `Zeroable` for the plain-f32 types after checking them (`repr(C)`,
 // no padding, `Pod` fields); the lint does not fire on that generated code
 // (src/features/impl_bytemuck.rs).
-#![cfg_attr(
-    not(any(
-        all(target_arch = "arm", target_abi = "eabihf"),
-        all(target_arch = "x86_64", target_feature = "sse"),
-        all(target_arch = "aarch64", target_feature = "neon")
-    )),
-    forbid(unsafe_code)
-)]
-#![cfg_attr(
-    any(
-        all(target_arch = "arm", target_abi = "eabihf"),
-        all(target_arch = "x86_64", target_feature = "sse"),
-        all(target_arch = "aarch64", target_feature = "neon")
-    ),
-    deny(unsafe_code)
-)]
+#![cfg_attr(not(any(arm_fpu_sqrt, vector_unit_sqrt)), forbid(unsafe_code))]
+#![cfg_attr(any(arm_fpu_sqrt, vector_unit_sqrt), deny(unsafe_code))]
 
 pub mod accuracy;
 pub mod animation;
@@ -232,13 +218,13 @@ mod vec;
 /// `kernel-contracts` feature, so that its tests can check that the
 /// kernels meet those contracts. Not part of the API: ordinary builds do
 /// not have this module.
-#[cfg(any(kani, feature = "kernel-contracts"))]
+#[cfg(kernels_exported)]
 #[doc(hidden)]
 pub mod kani_kernels {
     pub use crate::float::{atan2, sin_cos, sqrt};
     /// slerp's f64 angle and sine, which `proofs/gappa/angle_f64.g`,
     /// `angle_f64_above.g` and `sin_f64.g` model.
-    #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+    #[cfg(desktop64)]
     pub use crate::quat::kernels_f64::{atan2_of_root, sin_to_quarter_turn};
 }
 

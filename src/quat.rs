@@ -19,10 +19,7 @@ use core::ops::{Mul, MulAssign, Neg};
 
 use crate::vec::{Cvec3, Cvec4};
 
-#[cfg(all(
-    any(kani, feature = "kernel-contracts"),
-    any(target_arch = "x86_64", target_arch = "aarch64")
-))]
+#[cfg(all(kernels_exported, desktop64))]
 pub(crate) use slerp::kernels_f64;
 pub(crate) use slerp::{slerp_slice_by, Slerped};
 

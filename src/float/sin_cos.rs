@@ -81,7 +81,7 @@ pub(crate) fn sin_cos_kernel(x: f32) -> (f32, f32) {
 /// Inlined on 64-bit desktop targets, where the three calls of [`sin3`]
 /// then share vector instructions; elsewhere one out-of-line copy keeps
 /// flash small (a Cortex-M4F has no vector unit to gain from copies).
-#[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline(always))]
+#[cfg_attr(desktop64, inline(always))]
 fn sin_cos_quarter(a: f32) -> (f32, f32) {
     let swap = a > core::f32::consts::FRAC_PI_4;
     let (r, t) = if swap {
@@ -99,7 +99,7 @@ fn sin_cos_quarter(a: f32) -> (f32, f32) {
 
 /// `(sin(r + t), cos(r + t))` for `|r| <= pi/4`: both polynomials, in one
 /// function that the narrow and the reduced paths share.
-#[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline(always))]
+#[cfg_attr(desktop64, inline(always))]
 fn sin_cos_poly(r: f32, t: f32) -> (f32, f32) {
     (sin_poly(r, t), cos_poly(r, t))
 }

@@ -20,18 +20,11 @@
 #[inline]
 #[must_use]
 pub fn sqrt(x: f32) -> f32 {
-    #[cfg(all(target_arch = "arm", target_abi = "eabihf"))]
+    #[cfg(arm_fpu_sqrt)]
     return fpu_sqrt(x);
-    #[cfg(any(
-        all(target_arch = "x86_64", target_feature = "sse"),
-        all(target_arch = "aarch64", target_feature = "neon")
-    ))]
+    #[cfg(vector_unit_sqrt)]
     return vector_unit_sqrt(x);
-    #[cfg(not(any(
-        all(target_arch = "arm", target_abi = "eabihf"),
-        all(target_arch = "x86_64", target_feature = "sse"),
-        all(target_arch = "aarch64", target_feature = "neon")
-    )))]
+    #[cfg(not(any(arm_fpu_sqrt, vector_unit_sqrt)))]
     return libm::sqrtf(x);
 }
 
@@ -41,7 +34,7 @@ pub fn sqrt(x: f32) -> f32 {
 ///
 /// The intrinsics are `#[target_feature]` functions, `unsafe` to call
 /// from a function that does not enable the feature itself.
-#[cfg(all(target_arch = "x86_64", target_feature = "sse"))]
+#[cfg(all(vector_unit_sqrt, target_arch = "x86_64"))]
 #[allow(unsafe_code)]
 #[inline(always)]
 fn vector_unit_sqrt(x: f32) -> f32 {
@@ -63,7 +56,7 @@ fn vector_unit_sqrt(x: f32) -> f32 {
 ///
 /// The intrinsics are `#[target_feature]` functions, `unsafe` to call
 /// from a function that does not enable the feature itself.
-#[cfg(all(target_arch = "aarch64", target_feature = "neon"))]
+#[cfg(all(vector_unit_sqrt, target_arch = "aarch64"))]
 #[allow(unsafe_code)]
 #[inline(always)]
 fn vector_unit_sqrt(x: f32) -> f32 {
@@ -86,7 +79,7 @@ fn vector_unit_sqrt(x: f32) -> f32 {
 /// which stable Rust does not expose for Arm. So the value goes in and out
 /// through a core register, and `s0` is saved and restored around the
 /// instruction (five instructions in all).
-#[cfg(all(target_arch = "arm", target_abi = "eabihf"))]
+#[cfg(arm_fpu_sqrt)]
 #[allow(unsafe_code)]
 #[inline]
 fn fpu_sqrt(x: f32) -> f32 {

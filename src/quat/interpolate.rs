@@ -38,7 +38,7 @@ impl Quat {
     // Inlined across crates on 64-bit desktop targets, where the call
     // costs as much as a share of the work; one out-of-line copy elsewhere
     // (flash on a Cortex-M4F).
-    #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
+    #[cfg_attr(desktop64, inline)]
     #[must_use]
     pub fn nlerp(self, other: Self, alpha: f32) -> Self {
         // The sign goes on `other`, as an exclusive or of its sign bits

@@ -94,7 +94,7 @@ impl Quat {
     // Inlined across crates on 64-bit desktop targets, where the call
     // costs as much as a share of the work; one out-of-line copy elsewhere
     // (flash on a Cortex-M4F).
-    #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
+    #[cfg_attr(desktop64, inline)]
     #[must_use]
     pub fn pow(self, alpha: f32) -> Self {
         if !(self.is_finite() && alpha.is_finite()) {

@@ -12,18 +12,15 @@ use super::Quat;
 /// under Kani (whose harnesses then need no model of the intrinsics).
 #[inline(always)]
 pub(super) fn hamilton(a: Quat, b: Quat) -> Quat {
-    #[cfg(all(target_arch = "x86_64", target_feature = "sse", not(kani)))]
+    #[cfg(x86_sse_lanes)]
     return by_lanes(a, b);
-    #[cfg(not(all(target_arch = "x86_64", target_feature = "sse", not(kani))))]
+    #[cfg(not(x86_sse_lanes))]
     return by_formula(a, b);
 }
 
 /// The notes' `[w1 w2 - c1.c2, w1 c2 + w2 c1 + c1 x c2]`, written out one
 /// component at a time, the terms in the order of `a`'s components.
-#[cfg(any(
-    test,
-    not(all(target_arch = "x86_64", target_feature = "sse", not(kani)))
-))]
+#[cfg(any(test, not(x86_sse_lanes)))]
 #[inline(always)]
 fn by_formula(a: Quat, b: Quat) -> Quat {
     Quat::from_wxyz(
@@ -45,7 +42,7 @@ fn by_formula(a: Quat, b: Quat) -> Quat {
 /// negated term into a subtraction and builds the sign pattern from
 /// additions, subtractions and lane blends, about ten instructions more
 /// per product than these columns.
-#[cfg(all(target_arch = "x86_64", target_feature = "sse", not(kani)))]
+#[cfg(x86_sse_lanes)]
 #[allow(unsafe_code)]
 #[inline(always)]
 fn by_lanes(a: Quat, b: Quat) -> Quat {
@@ -82,7 +79,7 @@ fn by_lanes(a: Quat, b: Quat) -> Quat {
     }
 }
 
-#[cfg(all(test, target_arch = "x86_64", target_feature = "sse", not(kani)))]
+#[cfg(all(test, x86_sse_lanes))]
 mod tests {
     use super::*;
     use rand::{Rng, SeedableRng};

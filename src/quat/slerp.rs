@@ -17,9 +17,9 @@
 use super::Quat;
 
 mod in_f32;
-#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+#[cfg(desktop64)]
 mod in_f64;
-#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+#[cfg(desktop64)]
 pub(crate) mod kernels_f64;
 mod slice;
 
@@ -117,17 +117,17 @@ impl Quat {
     // Inlined across crates on 64-bit desktop targets, where the call
     // costs as much as a share of the work; one out-of-line copy elsewhere
     // (flash on a Cortex-M4F).
-    #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
+    #[cfg_attr(desktop64, inline)]
     #[must_use]
     pub fn slerp(self, other: Self, alpha: f32) -> Self {
-        #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+        #[cfg(desktop64)]
         {
             if let Some(q) = self.slerp_f64(other, alpha) {
                 return q;
             }
             slerp_f32_in_registers(self, other, alpha)
         }
-        #[cfg(not(any(target_arch = "x86_64", target_arch = "aarch64")))]
+        #[cfg(not(desktop64))]
         self.slerp_f32(other, alpha)
     }
 }
@@ -145,7 +145,7 @@ impl Quat {
 /// case this call comes (31.0 against 29.5 ns per call on x86-64). Chains
 /// of dependent slerps pay a little for the registers instead (about 5 %
 /// in `catmull_rom`).
-#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+#[cfg(desktop64)]
 #[inline(never)]
 extern "C" fn slerp_f32_in_registers(a: Quat, b: Quat, alpha: f32) -> Quat {
     a.slerp_f32(b, alpha)

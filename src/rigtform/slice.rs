@@ -17,7 +17,7 @@ impl Slerped for RigTForm {
     fn lerp_rest(start: &Self, end: &Self, alpha: f32, out: &mut Self) {
         out.t = start.t.lerp(end.t, alpha);
     }
-    #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
+    #[cfg(x86_sse_lanes)]
     #[inline(always)]
     fn lerp_rest_of(starts: &[Self], ends: &[Self], alpha: f32, out: &mut [Self]) {
         lerp_all_components(starts, ends, alpha, out);
@@ -30,7 +30,7 @@ impl Slerped for RigTForm {
 /// of `Cvec3::lerp`, in a loop the compiler vectorizes. One of the few
 /// places of the crate's `unsafe` code: the slices of RigTForms seen as
 /// slices of f32.
-#[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
+#[cfg(x86_sse_lanes)]
 #[allow(unsafe_code)]
 #[inline(always)]
 fn lerp_all_components(starts: &[RigTForm], ends: &[RigTForm], alpha: f32, out: &mut [RigTForm]) {

@@ -26,10 +26,7 @@ impl Quat {
     /// [`slerp`](Self::slerp) in f32, the whole of it on every target but
     /// x86-64 and AArch64, where it takes what the f64 evaluation does not,
     /// out of line, through [`slerp_f32_in_registers`].
-    #[cfg_attr(
-        not(any(target_arch = "x86_64", target_arch = "aarch64")),
-        inline(always)
-    )]
+    #[cfg_attr(not(desktop64), inline(always))]
     pub(super) fn slerp_f32(self, other: Self, alpha: f32) -> Self {
         // The squared norms are sums of squares: NaN exactly for a NaN
         // component, infinite for an infinite one or where they overflow

@@ -93,7 +93,7 @@ pub(crate) trait Slerped: Copy {
     /// first `min(starts.len(), ends.len(), out.len())`) at once, for the
     /// steps of the x86-64 lanes; it may write the rotations of `out` too
     /// (they are written again afterwards).
-    #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
+    #[cfg(x86_sse_lanes)]
     fn lerp_rest_of(starts: &[Self], ends: &[Self], alpha: f32, out: &mut [Self]);
 }
 
@@ -108,7 +108,7 @@ impl Slerped for Quat {
     }
     #[inline(always)]
     fn lerp_rest(_: &Self, _: &Self, _: f32, _: &mut Self) {}
-    #[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
+    #[cfg(x86_sse_lanes)]
     #[inline(always)]
     fn lerp_rest_of(_: &[Self], _: &[Self], _: f32, _: &mut [Self]) {}
 }
@@ -120,23 +120,15 @@ impl Slerped for Quat {
 /// (`RigTForm`'s), read and written in place.
 #[inline(always)]
 pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, out: &mut [T]) {
-    #[cfg(all(target_arch = "x86_64", target_feature = "avx", not(kani)))]
+    #[cfg(x86_avx_lanes)]
     if alpha > 0.0 && alpha <= 1.0 {
         return steps::slerp_in_steps::<avx::Avx, T, 2, 4, 16>(starts, ends, alpha, out);
     }
-    #[cfg(all(
-        target_arch = "x86_64",
-        target_feature = "sse2",
-        not(target_feature = "avx"),
-        not(kani)
-    ))]
+    #[cfg(all(x86_sse_lanes, not(x86_avx_lanes)))]
     if alpha > 0.0 && alpha <= 1.0 {
         return steps::slerp_in_steps::<sse2::Sse2, T, 4, 8, 16>(starts, ends, alpha, out);
     }
-    #[cfg(all(
-        any(target_arch = "x86_64", target_arch = "aarch64"),
-        not(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))
-    ))]
+    #[cfg(portable_lanes)]
     if alpha > 0.0 && alpha <= 1.0 {
         return lanes::slerp_in_blocks(starts, ends, alpha, out);
     }
@@ -148,36 +140,25 @@ pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, o
 
 /// Steps of pairs in the vector registers of x86-64, through the
 /// operations of an instruction set, written by hand.
-#[cfg(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))]
+#[cfg(x86_sse_lanes)]
 mod steps;
 
 /// The operations of AVX: sixteen pairs a step.
-#[cfg(all(target_arch = "x86_64", target_feature = "avx", not(kani)))]
+#[cfg(x86_avx_lanes)]
 mod avx;
 
 /// The operations of SSE2: sixteen pairs a step (also compiled for the
 /// tests of AVX builds, which check both).
-#[cfg(all(
-    target_arch = "x86_64",
-    target_feature = "sse2",
-    any(test, not(target_feature = "avx")),
-    not(kani)
-))]
+#[cfg(all(x86_sse_lanes, any(test, not(x86_avx_lanes))))]
 mod sse2;
 
 /// The branch-free evaluation of the slice, in blocks the compiler
 /// vectorizes (also compiled for the tests on x86-64, which check it).
-#[cfg(all(
-    any(target_arch = "x86_64", target_arch = "aarch64"),
-    any(
-        test,
-        not(all(target_arch = "x86_64", target_feature = "sse2", not(kani)))
-    )
-))]
+#[cfg(any(portable_lanes, all(test, desktop64)))]
 mod lanes;
 
 /// What the tests of every evaluation of the slice in lanes share.
-#[cfg(all(test, any(target_arch = "x86_64", target_arch = "aarch64")))]
+#[cfg(all(test, desktop64))]
 mod tests {
     use super::super::in_f64::tests::{rare_pairs, unit};
     use crate::Quat;

@@ -419,7 +419,7 @@ mod tests {
         lanes_take_exactly_the_pairs_slerp_f64_takes::<Sse2, 4, 8, 16>();
     }
 
-    #[cfg(target_feature = "avx")]
+    #[cfg(x86_avx_lanes)]
     #[test]
     fn avx_lanes_take_exactly_the_pairs_slerp_f64_takes() {
         lanes_take_exactly_the_pairs_slerp_f64_takes::<super::super::avx::Avx, 2, 4, 16>();
@@ -447,7 +447,7 @@ mod tests {
         slices_of_every_length_are_the_single_calls::<Sse2, 4, 8, 16>();
     }
 
-    #[cfg(target_feature = "avx")]
+    #[cfg(x86_avx_lanes)]
     #[test]
     fn avx_slices_of_every_length_are_the_single_calls_bit_for_bit() {
         slices_of_every_length_are_the_single_calls::<super::super::avx::Avx, 2, 4, 16>();
