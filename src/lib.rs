@@ -228,10 +228,10 @@ pub mod kani_kernels {
     pub use crate::quat::kernels_f64::{atan2_of_root, sin_to_quarter_turn};
 }
 
-pub use matrix::Matrix4;
+pub use matrix::{Matrix4, NotRigid};
 pub use matrix3::Matrix3;
 pub use quat::{EulerRot, Quat};
-pub use rigtform::{NotRigid, RigTForm};
+pub use rigtform::RigTForm;
 pub use vec::{Cvec3, Cvec4};
 
 /// The README's Rust example, compiled and run as a doc test.

@@ -5,7 +5,11 @@
 use core::ops::{Mul, MulAssign};
 
 mod camera;
+mod quat_conversions;
+mod rig_tform_conversions;
 mod transform;
+
+pub use rig_tform_conversions::NotRigid;
 
 use crate::float;
 use crate::quat::Quat;

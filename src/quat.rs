@@ -8,7 +8,8 @@
 //! polar form and `pow`), `quat/interpolate.rs` ("to interpolate": `slerp`,
 //! `nlerp`, `blend`), `quat/exp_log.rs` (the exponential and logarithm
 //! maps, and gyro integration built on them), `quat/euler.rs` (Euler
-//! angles), `quat/from_matrix.rs` (the rotation of a rotation matrix),
+//! angles), `quat/from_basis.rs` (the rotation of an orthonormal basis, which
+//! `Quat::from_matrix` in `matrix/quat_conversions.rs` takes from a matrix),
 //! `quat/rotation_arc.rs` (the shortest rotation between two directions),
 //! `quat/catmull_rom.rs` (splines through many keyframes),
 //! `quat/arithmetic.rs` (sums and scaling, as a 4-vector),
@@ -272,7 +273,7 @@ mod euler;
 
 mod rotation_arc;
 
-mod from_matrix;
+mod from_basis;
 
 mod exp_log;
 

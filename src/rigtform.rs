@@ -16,8 +16,6 @@ mod look_at;
 mod other_names;
 mod slice;
 
-pub use other_names::NotRigid;
-
 /// A rigid body transform `A = T R`: first rotate by `r`, then translate by
 /// `t`. As a matrix, `[[r, t], [0, 1]]`.
 ///

@@ -9,8 +9,6 @@
 //! (tests below hold them against those crates).
 
 use super::{EulerRot, Quat};
-use crate::matrix::Matrix4;
-use crate::matrix3::Matrix3;
 use crate::vec::Cvec3;
 
 impl Quat {
@@ -244,37 +242,6 @@ impl Quat {
         self.inv() * p
     }
 
-    /// The rotation of a frame whose +z axis points along `dir` and whose y
-    /// axis is as close to `up` as that allows: nalgebra's
-    /// `UnitQuaternion::face_towards`, the rotation of
-    /// [`RigTForm::face_towards`](crate::RigTForm::face_towards) (with its
-    /// preconditions and accuracy).
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Quat};
-    /// let q = Quat::face_towards(Cvec3::X, Cvec3::Y);
-    /// assert!((q * Cvec3::Z - Cvec3::X).norm() < 1e-6);
-    /// ```
-    #[must_use]
-    pub fn face_towards(dir: Cvec3, up: Cvec3) -> Self {
-        crate::RigTForm::face_towards(Cvec3::ZERO, dir, up).r
-    }
-
-    /// The rotation of the view from an eye looking along `dir`, with `up`
-    /// up: nalgebra's `UnitQuaternion::look_at_rh`, which takes `dir` onto
-    /// -z; the inverse of [`face_towards`](Self::face_towards) of `-dir`,
-    /// and the rotation of [`RigTForm::look_at_rh`](crate::RigTForm::look_at_rh).
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Quat};
-    /// let q = Quat::look_at_rh(Cvec3::X, Cvec3::Y);
-    /// assert!((q * Cvec3::X + Cvec3::Z).norm() < 1e-6);
-    /// ```
-    #[must_use]
-    pub fn look_at_rh(dir: Cvec3, up: Cvec3) -> Self {
-        crate::RigTForm::look_at(Cvec3::ZERO, dir, up).r.inv()
-    }
-
     /// nalgebra's `scaled_axis`: here [`to_scaled_axis`](Self::to_scaled_axis).
     ///
     /// ```
@@ -322,52 +289,6 @@ impl Quat {
     #[must_use]
     pub fn rotation_between(from: Cvec3, to: Cvec3) -> Self {
         Self::from_rotation_arc(from, to)
-    }
-
-    /// nalgebra's `from_rotation_matrix`: here [`from_mat3`](Self::from_mat3)
-    /// (or [`from_matrix`](Self::from_matrix) for a `Matrix4`).
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Matrix3, Quat};
-    /// let m = Matrix3::from_quat(Quat::from_rotation_y(0.4));
-    /// assert_eq!(Quat::from_rotation_matrix(&m), Quat::from_mat3(m));
-    /// ```
-    #[deprecated(since = "0.1.0", note = "use `Quat::from_mat3(m)` (by value)")]
-    #[inline]
-    #[must_use]
-    pub fn from_rotation_matrix(m: &Matrix3) -> Self {
-        Self::from_mat3(*m)
-    }
-
-    /// nalgebra's `to_rotation_matrix`: here `Matrix3::from_quat(q)`.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Matrix3, Quat};
-    /// let q = Quat::from_rotation_y(0.4);
-    /// assert_eq!(q.to_rotation_matrix(), Matrix3::from_quat(q));
-    /// ```
-    #[deprecated(since = "0.1.0", note = "use `Matrix3::from_quat(q)`")]
-    #[inline]
-    #[must_use]
-    pub fn to_rotation_matrix(self) -> Matrix3 {
-        Matrix3::from_quat(self)
-    }
-
-    /// nalgebra's `to_homogeneous`: here `Matrix4::from_quat(q)`.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Matrix4, Quat};
-    /// let q = Quat::from_rotation_y(0.4);
-    /// assert_eq!(q.to_homogeneous(), Matrix4::from_quat(q));
-    /// ```
-    #[deprecated(since = "0.1.0", note = "use `Matrix4::from_quat(q)`")]
-    #[inline]
-    #[must_use]
-    pub fn to_homogeneous(self) -> Matrix4 {
-        Matrix4::from_quat(self)
     }
 
     /// glam's and nalgebra's `inverse`: the notes call it `inv`.
@@ -433,22 +354,6 @@ impl Quat {
     #[must_use]
     pub const fn identity() -> Self {
         Self::IDENTITY
-    }
-
-    /// glam's `from_mat4(&m)`: here [`from_matrix`](Self::from_matrix),
-    /// which takes the matrix by value.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Matrix4, Quat};
-    /// let m = Matrix4::from_quat(Quat::from_rotation_y(0.4));
-    /// assert_eq!(Quat::from_mat4(&m), Quat::from_matrix(m));
-    /// ```
-    #[deprecated(since = "0.1.0", note = "use `Quat::from_matrix(m)` (by value)")]
-    #[inline]
-    #[must_use]
-    pub fn from_mat4(m: &Matrix4) -> Self {
-        Self::from_matrix(*m)
     }
 
     /// nalgebra's `from_euler_angles(roll, pitch, yaw)`: the rotation
@@ -597,9 +502,6 @@ mod tests {
             }
             assert_eq!(a.scaled_axis(), a.to_scaled_axis());
             assert!(close(a.scaled_axis(), na_a.scaled_axis()));
-            let m = Matrix4::from_quat(a);
-            let from_glam = glam::Quat::from_mat4(&glam::Mat4::from_cols_array(&m.to_cols_array()));
-            assert!(Quat::from_mat4(&m).angle_to(Quat::from_array(from_glam.to_array())) < 1e-5);
         }
         assert_eq!(Quat::identity().to_array(), glam::Quat::IDENTITY.to_array());
         let mut rng = rand::rngs::StdRng::seed_from_u64(34);

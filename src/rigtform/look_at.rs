@@ -1,6 +1,8 @@
 //! [`RigTForm::look_at`]: the frame of an eye at one point looking at
 //! another, as the notes' eye frame (`eyeRbt`): the eye looks down its own
-//! -z axis, with its y axis up, as in OpenGL.
+//! -z axis, with its y axis up, as in OpenGL; and nalgebra's rotations
+//! that look along a direction, `Quat::face_towards` and `Quat::look_at_rh`,
+//! which are the rotations of such frames.
 
 use super::RigTForm;
 use crate::quat::Quat;
@@ -62,5 +64,38 @@ impl RigTForm {
             Quat::from_rotation_arc(-Cvec3::Z, -back)
         };
         Self::new(eye, r)
+    }
+}
+
+impl Quat {
+    /// The rotation of a frame whose +z axis points along `dir` and whose y
+    /// axis is as close to `up` as that allows: nalgebra's
+    /// `UnitQuaternion::face_towards`, the rotation of
+    /// [`RigTForm::face_towards`](RigTForm::face_towards) (with its
+    /// preconditions and accuracy).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::face_towards(Cvec3::X, Cvec3::Y);
+    /// assert!((q * Cvec3::Z - Cvec3::X).norm() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn face_towards(dir: Cvec3, up: Cvec3) -> Self {
+        RigTForm::face_towards(Cvec3::ZERO, dir, up).r
+    }
+
+    /// The rotation of the view from an eye looking along `dir`, with `up`
+    /// up: nalgebra's `UnitQuaternion::look_at_rh`, which takes `dir` onto
+    /// -z; the inverse of [`face_towards`](Self::face_towards) of `-dir`,
+    /// and the rotation of [`RigTForm::look_at_rh`](RigTForm::look_at_rh).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::look_at_rh(Cvec3::X, Cvec3::Y);
+    /// assert!((q * Cvec3::X + Cvec3::Z).norm() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn look_at_rh(dir: Cvec3, up: Cvec3) -> Self {
+        RigTForm::look_at(Cvec3::ZERO, dir, up).r.inv()
     }
 }
