@@ -222,9 +222,22 @@ fn main() -> std::io::Result<()> {
     write("sampler", sampler)?;
     write("slices", slices_seeds())?;
     write("blend", blend_seeds())?;
+    write("laws", laws_seeds())?;
     write("obj", obj_seeds())?;
     write("csv", csv_seeds())?;
     regressions()
+}
+
+/// The laws target's seeds: each law of the registry once, with a seed of
+/// its own (the law's index byte, then the seed's eight bytes).
+fn laws_seeds() -> Vec<Vec<u8>> {
+    (0..rigtform_proofs::laws::registry::LAWS.len())
+        .map(|i| {
+            let mut seed = vec![i as u8];
+            seed.extend_from_slice(&(i as u64 * 7919).to_le_bytes());
+            seed
+        })
+        .collect()
 }
 
 /// The slices target's seeds: `alpha`, whether it is taken into (0, 1],

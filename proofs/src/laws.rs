@@ -21,6 +21,7 @@ use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 
 mod animation;
 mod constructors;
+pub mod registry;
 pub use animation::{
     sampler_hits_its_keys, sampler_is_unit, step_sampler_is_constant_between_keys,
 };
