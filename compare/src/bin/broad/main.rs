@@ -366,15 +366,17 @@ fn print_peers(trials: &[Trial]) {
             }
             println!("| {} | {} |", t.name, cells.join(" | "));
         }
-        let means: Vec<String> = sums
-            .iter()
-            .map(|s| format!("{:.2}", s / trials.len() as f64))
-            .collect();
-        println!(
-            "| mean of {} trials | {} |",
-            trials.len(),
-            means.join(" | ")
-        );
+        if trials.len() > 1 {
+            let means: Vec<String> = sums
+                .iter()
+                .map(|s| format!("{:.2}", s / trials.len() as f64))
+                .collect();
+            println!(
+                "| mean of {} trials | {} |",
+                trials.len(),
+                means.join(" | ")
+            );
+        }
     }
 }
 

@@ -92,10 +92,10 @@ impl Peer {
             .map_err(|e| format!("{python} {shown}: {e}"))?;
         if !output.status.success() {
             return Err(format!(
-                "{python} {shown} {}: {}\n({} comes from PyPI: `{python} -m pip install {}`)",
+                "{python} {shown} {}: {}\n(the script needs `{}` from PyPI: `{python} -m pip install {}`)",
                 path.display(),
                 String::from_utf8_lossy(&output.stderr).trim(),
-                self.name,
+                self.package,
                 self.package,
             ));
         }
