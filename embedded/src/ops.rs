@@ -7,6 +7,11 @@
 use rigtform::animation::{Interpolation, Sampler};
 use rigtform::{Cvec3, Cvec4, Matrix4, Quat, RigTForm};
 
+#[cfg(feature = "attitude-peers")]
+mod attitude;
+#[cfg(feature = "attitude-peers")]
+pub use attitude::*;
+
 /// The inputs of every operation: two unit quaternions, two vectors (also
 /// the translations of two rigid body transforms) and a parameter in [0, 1].
 #[derive(Clone, Copy, Debug)]

@@ -97,13 +97,37 @@ fn executable(messages: &str, bin: &str) -> Result<PathBuf> {
 /// Builds `bin` with `features`, runs it in QEMU with the exec trace, and
 /// returns the rows it announced with their instruction counts.
 pub fn count(bin: &str, features: Option<&str>) -> Result<Vec<Measured>> {
+    count_build(Build::new(bin, features))
+}
+
+/// [`count`], the firmware built at `opt_level` instead of the release
+/// profile's (in a target directory of its own).
+pub fn count_at(bin: &str, features: Option<&str>, opt_level: &str) -> Result<Vec<Measured>> {
+    count_build(Build {
+        env: vec![("CARGO_PROFILE_RELEASE_OPT_LEVEL", opt_level.to_owned())],
+        target_dir: Some(embedded().join("target").join(format!("count-{opt_level}"))),
+        ..Build::new(bin, features)
+    })
+}
+
+/// [`count`] of the firmware `build` makes.
+fn count_build(build: Build) -> Result<Vec<Measured>> {
     tools::ensure_thumb_target()?;
     let qemu = tools::ensure_qemu()?;
+    let bin = build.bin;
     say(format!(
-        "building embedded/src/bin/{bin}.rs for {TARGET}{}",
-        features.map(|f| format!(" with {f}")).unwrap_or_default()
+        "building embedded/src/bin/{bin}.rs for {TARGET}{}{}",
+        build
+            .features
+            .map(|f| format!(" with {f}"))
+            .unwrap_or_default(),
+        build
+            .env
+            .iter()
+            .map(|(k, v)| format!(", {k}={v}"))
+            .collect::<String>()
     ));
-    let elf = Build::new(bin, features).run()?;
+    let elf = build.run()?;
     let markers = markers(&elf)?;
     let work = tempfile::tempdir().context("creating a temporary directory for the trace")?;
     let (trace_path, stdout_path) = (work.path().join("trace.log"), work.path().join("stdout"));

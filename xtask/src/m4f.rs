@@ -1,13 +1,18 @@
 //! The Cortex-M4F table (instructions per call and flash bytes of every
 //! operation of `embedded/src/ops.rs`), slerp's budget, and the attitude
-//! filter's budget.
+//! filter's budget and its table beside uf-ahrs's filters.
 
 use std::fmt::Write;
 
 use anyhow::{bail, ensure, Context, Result};
 
 use crate::firmware::{self, EMPTY_OP};
+use crate::page;
 use crate::tools::{self, say};
+use crate::trace::Measured;
+
+/// The performance page, from the repository's root.
+pub const PAGE: &str = "docs/performance.md";
 
 /// The opt-levels of the flash columns.
 const OPT_LEVELS: [&str; 2] = ["s", "3"];
@@ -168,11 +173,201 @@ pub fn budget() -> Result<()> {
     Ok(())
 }
 
+/// The embedded feature that adds uf-ahrs's filters to
+/// `bin/filter_cost.rs` and their updates to `ops.rs`.
+const ATTITUDE_PEERS: &str = "attitude-peers";
+
+/// One filter of the attitude table: its name, the rows of
+/// `bin/filter_cost.rs` that count its 6D and 9D updates (the 6D row names
+/// its state size), and the functions of `ops.rs` that the flash builds
+/// link for each.
+struct Filter {
+    name: &'static str,
+    six: &'static str,
+    nine: &'static str,
+    flash_six: &'static str,
+    flash_nine: &'static str,
+}
+
+/// Ours, then uf-ahrs's three.
+const FILTERS: [Filter; 4] = [
+    Filter {
+        name: "rigtform OrientationFilter",
+        six: "OrientationFilter::update (6D)",
+        nine: "OrientationFilter::update_with_mag (9D)",
+        flash_six: "rigtform_filter_6d",
+        flash_nine: "rigtform_filter_9d",
+    },
+    Filter {
+        name: "uf-ahrs Vqf",
+        six: "uf-ahrs Vqf::update_imu (6D)",
+        nine: "uf-ahrs Vqf::update (9D)",
+        flash_six: "uf_ahrs_vqf_6d",
+        flash_nine: "uf_ahrs_vqf_9d",
+    },
+    Filter {
+        name: "uf-ahrs Mahony",
+        six: "uf-ahrs Mahony::update_imu (6D)",
+        nine: "uf-ahrs Mahony::update (9D)",
+        flash_six: "uf_ahrs_mahony_6d",
+        flash_nine: "uf_ahrs_mahony_9d",
+    },
+    Filter {
+        name: "uf-ahrs Madgwick",
+        six: "uf-ahrs Madgwick::update_imu (6D)",
+        nine: "uf-ahrs Madgwick::update (9D)",
+        flash_six: "uf_ahrs_madgwick_6d",
+        flash_nine: "uf_ahrs_madgwick_9d",
+    },
+];
+
+/// One filter's measured cost.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FilterCost {
+    /// The filter (the table's first column).
+    pub name: String,
+    /// Instructions per 6D and per 9D update, built at each of
+    /// [`OPT_LEVELS`].
+    pub six: [i64; 2],
+    pub nine: [i64; 2],
+    /// `size_of` the filter on the target.
+    pub state: u64,
+    /// Flash bytes at opt-level "s" of a firmware making the filter and
+    /// calling its 6D, or its 9D, update (less the empty firmware).
+    pub flash: [u64; 2],
+}
+
+/// The row named `name` (its first field).
+fn row<'a>(rows: &'a [Measured], name: &str) -> Result<&'a Measured> {
+    rows.iter()
+        .find(|m| m.fields.first().is_some_and(|f| f == name))
+        .with_context(|| format!("the firmware announced no row {name:?}"))
+}
+
+/// `features` with `more` added.
+fn with_feature(features: Option<&str>, more: &str) -> String {
+    match features {
+        Some(f) => format!("{f},{more}"),
+        None => more.into(),
+    }
+}
+
+/// The attitude table's costs: every filter of [`FILTERS`] from `rows`
+/// (one run of `bin/filter_cost.rs` with the peers at each of
+/// [`OPT_LEVELS`]), and its flash from the size builds at opt-level "s"
+/// (with `features` besides the peers).
+fn filter_costs(rows: [&[Measured]; 2], features: Option<&str>) -> Result<Vec<FilterCost>> {
+    let llvm_tools = tools::llvm_tools()?;
+    let features = bench_features(Some(&with_feature(features, ATTITUDE_PEERS)));
+    let base = firmware::flash(&llvm_tools, "s", EMPTY_OP, &features)?;
+    FILTERS
+        .iter()
+        .map(|f| {
+            let state = state_bytes(&row(rows[0], f.six)?.fields)
+                .with_context(|| format!("the row {:?} names no state size", f.six))?;
+            let count = |name: &str| -> Result<[i64; 2]> {
+                Ok([
+                    row(rows[0], name)?.instructions,
+                    row(rows[1], name)?.instructions,
+                ])
+            };
+            let mut flash = [0; 2];
+            for (bytes, function) in flash.iter_mut().zip([f.flash_six, f.flash_nine]) {
+                say(format!("flash at opt-level \"s\": {function}"));
+                *bytes = added_flash(&llvm_tools, "s", base, function, &features)?;
+            }
+            Ok(FilterCost {
+                name: f.name.into(),
+                six: count(f.six)?,
+                nine: count(f.nine)?,
+                state,
+                flash,
+            })
+        })
+        .collect()
+}
+
+/// The attitude table (Markdown), then how ours compares with uf-ahrs's
+/// VQF.
+pub fn filter_table(costs: &[FilterCost]) -> String {
+    let mut t = String::from(
+        "| filter | instructions per 6D update, opt-level \"s\" | per 9D update, \"s\" | \
+         per 6D update, opt-level 3 | per 9D update, 3 | state bytes | flash bytes, 6D | \
+         flash bytes, 9D |\n| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n",
+    );
+    for c in costs {
+        writeln!(
+            t,
+            "| {} | {} | {} | {} | {} | {} | {} | {} |",
+            c.name, c.six[0], c.nine[0], c.six[1], c.nine[1], c.state, c.flash[0], c.flash[1]
+        )
+        .unwrap();
+    }
+    if let [ours, vqf, ..] = costs {
+        let ratio = |a: i64, b: i64| a as f64 / b as f64;
+        writeln!(
+            t,
+            "\n{} takes {:.2} times the instructions of {} per 6D update and {:.2} times per 9D \
+             update (at opt-level 3: {:.2} and {:.2}).",
+            ours.name,
+            ratio(ours.six[0], vqf.six[0]),
+            vqf.name,
+            ratio(ours.nine[0], vqf.nine[0]),
+            ratio(ours.six[1], vqf.six[1]),
+            ratio(ours.nine[1], vqf.nine[1]),
+        )
+        .unwrap();
+    }
+    t
+}
+
+/// The page's attitude block: what was measured, how, and the table.
+pub fn filter_section(costs: &[FilterCost], date: &str) -> String {
+    let mut s = String::new();
+    writeln!(
+        s,
+        "{} (generated by cargo xtask filter-cost --peers on {date}; do not edit by hand) -->\n",
+        page::ATTITUDE.begin
+    )
+    .unwrap();
+    s += "Cortex-M4F (QEMU `mps2-an386`, `thumbv7em-none-eabihf`, LTO, one codegen unit):\n\
+          instructions executed by one update of a filter warmed up on 1,200 samples of a\n\
+          tilted sensor turning at 0.3 rad/s with a gyro bias (`embedded/src/bin/filter_cost.rs`,\n\
+          the same samples and the same input for every filter), at the firmware's opt-level\n\
+          \"s\" (the budgets' measure) and at opt-level 3 (uf-ahrs's release profile); the\n\
+          filter's `size_of`; and the flash bytes, at opt-level \"s\", that making the filter\n\
+          and calling its 6D or its 9D update adds to a firmware (`embedded/src/ops/attitude.rs`,\n\
+          less the empty firmware). uf-ahrs's filters run as its README shows:\n\
+          `new(3.5 ms, default parameters)`, `update_imu` (6D) and `update` (9D).\n\n";
+    s += &filter_table(costs);
+    s += page::ATTITUDE.end;
+    s += "\n";
+    s
+}
+
+/// The page's attitude block from one run of the firmware with the peers
+/// and their flash builds (perf-report's).
+pub fn attitude_section(date: &str) -> Result<String> {
+    let rows = firmware::count("filter_cost", Some(ATTITUDE_PEERS))?;
+    let rows3 = firmware::count_at("filter_cost", Some(ATTITUDE_PEERS), OPT_LEVELS[1])?;
+    Ok(filter_section(&filter_costs([&rows, &rows3], None)?, date))
+}
+
 /// `cargo xtask filter-cost`: the rows of `embedded/src/bin/filter_cost.rs`
 /// (instructions per call of the attitude updates, and the filter's state
 /// size on the target), then the filter's budget; fails unless it holds.
-pub fn filter_budget(features: Option<&str>) -> Result<()> {
-    let rows = firmware::count("filter_cost", features)?;
+/// With `peers`, the firmware also counts uf-ahrs's filters, and the
+/// attitude table follows (with each filter's flash); with `write_page`
+/// too, the table goes into the performance page's attitude block.
+pub fn filter_budget(features: Option<&str>, peers: bool, write_page: bool) -> Result<()> {
+    let root = tools::root();
+    let page_path = root.join(PAGE);
+    if write_page {
+        // Fail now, not after the builds, if the block is not there.
+        page::splice(&std::fs::read_to_string(&page_path)?, page::ATTITUDE, "")?;
+    }
+    let firmware_features = peers.then(|| with_feature(features, ATTITUDE_PEERS));
+    let rows = firmware::count("filter_cost", firmware_features.as_deref().or(features))?;
     for m in &rows {
         println!(
             "{:<42} {:>6} instructions (less an empty bracket of {})",
@@ -181,19 +376,22 @@ pub fn filter_budget(features: Option<&str>) -> Result<()> {
             m.empty
         );
     }
-    let instructions = |name: &str| -> Result<i64> {
-        rows.iter()
-            .find(|m| m.fields.first().is_some_and(|f| f == name))
-            .map(|m| m.instructions)
-            .with_context(|| format!("the firmware announced no row {name:?}"))
-    };
-    let six = instructions("OrientationFilter::update (6D)")?;
-    let nine = instructions("OrientationFilter::update_with_mag (9D)")?;
-    let state = rows
-        .iter()
-        .find_map(|m| state_bytes(&m.fields))
-        .context("the firmware announced no state size")?;
+    let ours = &FILTERS[0];
+    let six = row(&rows, ours.six)?;
+    let state = state_bytes(&six.fields).context("the firmware announced no state size")?;
+    let (six, nine) = (six.instructions, row(&rows, ours.nine)?.instructions);
     println!("{}", filter_budget_line(six, nine, state));
+    if peers {
+        let rows3 = firmware::count_at("filter_cost", firmware_features.as_deref(), OPT_LEVELS[1])?;
+        let costs = filter_costs([&rows, &rows3], features)?;
+        print!("\n{}", filter_table(&costs));
+        if write_page {
+            let old = std::fs::read_to_string(&page_path)?;
+            let section = filter_section(&costs, &crate::report::today());
+            page::write_whole(&page_path, &page::splice(&old, page::ATTITUDE, &section)?)?;
+            say(format!("{PAGE}: the attitude block is regenerated"));
+        }
+    }
     ensure!(
         six <= FILTER_6D_INSTRUCTIONS
             && nine <= FILTER_9D_INSTRUCTIONS
@@ -253,6 +451,35 @@ mod tests {
             "slerp on the Cortex-M4F: 368 instructions per call (budget 400), \
              2044 bytes of flash at opt-level \"s\" (budget 2048)"
         );
+    }
+
+    #[test]
+    fn the_attitude_table_has_a_row_per_filter_and_compares_with_vqf() {
+        let cost = |name: &str, six, nine| FilterCost {
+            name: name.into(),
+            six,
+            nine,
+            state: 256,
+            flash: [8000, 10000],
+        };
+        let t = filter_table(&[
+            cost("ours", [1000, 900], [2000, 1800]),
+            cost("vqf", [4000, 3000], [8000, 6000]),
+        ]);
+        let lines: Vec<&str> = t.lines().collect();
+        assert_eq!(lines.len(), 6, "{t}");
+        assert_eq!(
+            lines[2],
+            "| ours | 1000 | 2000 | 900 | 1800 | 256 | 8000 | 10000 |"
+        );
+        assert_eq!(
+            lines[5],
+            "ours takes 0.25 times the instructions of vqf per 6D update and 0.25 times per \
+             9D update (at opt-level 3: 0.30 and 0.30)."
+        );
+        let section = filter_section(&[cost("ours", [1, 1], [1, 1])], "2026-01-01");
+        assert!(section.starts_with(page::ATTITUDE.begin), "{section}");
+        assert!(section.ends_with(&format!("{}\n", page::ATTITUDE.end)));
     }
 
     #[test]

@@ -11,20 +11,25 @@
 //! - `cargo xtask budget`: the counts, then slerp's flash at opt-level "s";
 //!   fails unless rigtform's slerp takes at most 400 instructions per call
 //!   and 2048 bytes. CI runs it.
-//! - `cargo xtask filter-cost [--features F]`: instructions per
-//!   call of the attitude updates (`embedded/src/bin/filter_cost.rs`) and
-//!   the filter's state size on the target; fails unless a 6D update takes
-//!   at most 1,600 instructions, a 9D update at most 2,200, and the state
-//!   at most 256 bytes. CI runs it.
+//! - `cargo xtask filter-cost [--features F] [--peers [--write-page]]`:
+//!   instructions per call of the attitude updates
+//!   (`embedded/src/bin/filter_cost.rs`) and the filter's state size on the
+//!   target; fails unless a 6D update takes at most 1,600 instructions, a
+//!   9D update at most 2,200, and the state at most 256 bytes. CI runs it.
+//!   `--peers` counts uf-ahrs's VQF, Mahony and Madgwick in the same run,
+//!   on the same samples, and measures each filter's flash at opt-level
+//!   "s" (`embedded/src/ops/attitude.rs`): the table of the performance
+//!   page's attitude block, which `--write-page` rewrites.
 //! - `cargo xtask gltf-check`: rigtform's glTF keyframe samplers against
 //!   three.js's interpolants, on BoxAnimated and on random channels
 //!   ([`gltf_check`]); fails above 1e-6 rad or 1e-6. CI runs it.
 //! - `cargo xtask perf-report [--draws N]`: the tables of the performance
 //!   page, `docs/performance.md`: criterion's medians on the host (`cargo bench -p
 //!   rigtform-compare --bench ops`), the Cortex-M4F table, and the
-//!   accuracy report on 1,000,000 draws per class; written between the
-//!   page's `perf-report` markers, the page replaced only when all of it
-//!   succeeded.
+//!   accuracy report on 1,000,000 draws per class, written between the
+//!   page's `perf-report` markers; the attitude table of `filter-cost
+//!   --peers` between its `attitude-cost` markers; the page replaced only
+//!   when all of it succeeded.
 //! - `cargo xtask prove`: the accuracy constants that provers establish.
 //!   Runs every Gappa model of `proofs/gappa/` (and its Sollya scripts),
 //!   checks each certificate with `coqc`, runs the test that the models
@@ -100,6 +105,14 @@ enum Cmd {
         /// Cargo features of rigtform in the firmware
         #[arg(long)]
         features: Option<String>,
+        /// Also counts uf-ahrs's VQF, Mahony and Madgwick on the same
+        /// input, and measures every filter's flash
+        #[arg(long)]
+        peers: bool,
+        /// With --peers: writes the table into docs/performance.md's
+        /// attitude block
+        #[arg(long, requires = "peers")]
+        write_page: bool,
     },
     /// rigtform's glTF samplers against three.js's interpolants (npm ci of
     /// tools/gltf-check, then node); fails above 1e-6
@@ -140,7 +153,11 @@ fn run(command: Cmd) -> Result<()> {
             print!("{}", m4f::table(&ops));
         }
         Cmd::Budget => m4f::budget()?,
-        Cmd::FilterCost { features } => m4f::filter_budget(features.as_deref())?,
+        Cmd::FilterCost {
+            features,
+            peers,
+            write_page,
+        } => m4f::filter_budget(features.as_deref(), peers, write_page)?,
         Cmd::PerfReport { draws } => report::perf_report(draws)?,
         Cmd::GltfCheck => gltf_check::gltf_check()?,
         Cmd::Prove => prove::prove_all()?,

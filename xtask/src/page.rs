@@ -1,40 +1,61 @@
-//! The generated block of the performance page (`docs/performance.md`):
-//! replaced between its two marker lines, and the file written whole or
-//! not at all.
+//! The generated blocks of the performance page (`docs/performance.md`):
+//! each replaced between its two marker lines, and the file written whole
+//! or not at all.
 
 use std::io::Write;
 use std::path::Path;
 
 use anyhow::{bail, Context, Result};
 
-/// How the first line of the generated block starts (the rest of that line
-/// says what generated it and when).
-pub const BEGIN: &str = "<!-- perf-report:begin";
-/// The last line of the generated block.
-pub const END: &str = "<!-- perf-report:end -->";
+/// The two marker lines of one generated block.
+#[derive(Clone, Copy, Debug)]
+pub struct Block {
+    /// How the block's first line starts (the rest of that line says what
+    /// generated it and when).
+    pub begin: &'static str,
+    /// The block's last line.
+    pub end: &'static str,
+}
 
-/// `page` with the lines from the one starting with [`BEGIN`] through the
-/// line [`END`] replaced by `section` (which brings its own marker lines).
-/// Everything outside stays byte for byte. Fails unless each marker is
-/// there exactly once, in that order.
-pub fn splice(page: &str, section: &str) -> Result<String> {
+/// The tables of `cargo xtask perf-report`.
+pub const PERF_REPORT: Block = Block {
+    begin: "<!-- perf-report:begin",
+    end: "<!-- perf-report:end -->",
+};
+
+/// The attitude filters' cost on the Cortex-M4F, beside their peers
+/// (`cargo xtask filter-cost --peers --write-page`, and perf-report).
+pub const ATTITUDE: Block = Block {
+    begin: "<!-- attitude-cost:begin",
+    end: "<!-- attitude-cost:end -->",
+};
+
+/// `page` with the lines from the one starting with `block.begin` through
+/// the line `block.end` replaced by `section` (which brings its own marker
+/// lines). Everything outside stays byte for byte. Fails unless each marker
+/// is there exactly once, in that order.
+pub fn splice(page: &str, block: Block, section: &str) -> Result<String> {
+    let Block {
+        begin: first,
+        end: last,
+    } = block;
     let mut begin = Vec::new();
     let mut end = Vec::new();
     let mut offset = 0;
     for line in page.split_inclusive('\n') {
         let text = line.trim_end_matches(['\n', '\r']);
-        if text.starts_with(BEGIN) {
+        if text.starts_with(first) {
             begin.push(offset);
-        } else if text == END {
+        } else if text == last {
             end.push(offset + line.len());
         }
         offset += line.len();
     }
     let (start, stop) = match (&begin[..], &end[..]) {
         ([start], [stop]) if start < stop => (*start, *stop),
-        ([], _) | (_, []) => bail!("the page has no `{BEGIN} ...-->` ... `{END}` block"),
-        ([_], [_]) => bail!("the page's `{END}` comes before `{BEGIN}`"),
-        _ => bail!("the page has more than one `{BEGIN}` or `{END}` line"),
+        ([], _) | (_, []) => bail!("the page has no `{first} ...-->` ... `{last}` block"),
+        ([_], [_]) => bail!("the page's `{last}` comes before `{first}`"),
+        _ => bail!("the page has more than one `{first}` or `{last}` line"),
     };
     let mut out = String::with_capacity(page.len() + section.len());
     out += &page[..start];
@@ -75,23 +96,38 @@ mod tests {
 
     #[test]
     fn replaces_the_block_and_nothing_else() {
-        let out = splice(PAGE, SECTION).unwrap();
+        let out = splice(PAGE, PERF_REPORT, SECTION).unwrap();
         assert_eq!(
             out,
             "# Title\n\nBefore.\n\n\
              <!-- perf-report:begin (generated) -->\nnew\n<!-- perf-report:end -->\n\nAfter.\n"
         );
         // Again on its own output: the same.
-        assert_eq!(splice(&out, SECTION).unwrap(), out);
+        assert_eq!(splice(&out, PERF_REPORT, SECTION).unwrap(), out);
+    }
+
+    #[test]
+    fn each_block_is_replaced_on_its_own() {
+        let page =
+            format!("{PAGE}<!-- attitude-cost:begin x -->\nold\n<!-- attitude-cost:end -->\n");
+        let attitude = "<!-- attitude-cost:begin y -->\nnew\n<!-- attitude-cost:end -->\n";
+        let out = splice(&page, ATTITUDE, attitude).unwrap();
+        assert_eq!(out, format!("{PAGE}{attitude}"));
+        let out = splice(&out, PERF_REPORT, SECTION).unwrap();
+        assert!(out.contains(SECTION) && out.contains(attitude), "{out}");
+        assert!(splice(PAGE, ATTITUDE, attitude).is_err());
     }
 
     #[test]
     fn keeps_a_page_without_a_final_newline_intact() {
         let page = "a\n<!-- perf-report:begin x -->\nold\n<!-- perf-report:end -->";
-        assert_eq!(splice(page, SECTION).unwrap(), format!("a\n{SECTION}"));
+        assert_eq!(
+            splice(page, PERF_REPORT, SECTION).unwrap(),
+            format!("a\n{SECTION}")
+        );
         let page = "a\r\n<!-- perf-report:begin x -->\r\nold\r\n<!-- perf-report:end -->\r\nz\r\n";
         assert_eq!(
-            splice(page, SECTION).unwrap(),
+            splice(page, PERF_REPORT, SECTION).unwrap(),
             format!("a\r\n{SECTION}z\r\n")
         );
     }
@@ -109,7 +145,7 @@ mod tests {
             (&twice, "more than one"),
             (swapped, "comes before"),
         ] {
-            let e = splice(page, SECTION).unwrap_err();
+            let e = splice(page, PERF_REPORT, SECTION).unwrap_err();
             assert!(e.to_string().contains(says), "{page}: {e}");
         }
     }

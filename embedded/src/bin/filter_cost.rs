@@ -5,6 +5,13 @@
 //! `cargo xtask filter-cost`, not directly. The first row also names the filter's state
 //! size (`state <bytes> bytes`, `size_of` on this target), which the xtask
 //! checks against its budget with the instruction counts.
+//!
+//! Built with the feature `attitude-peers` (`cargo xtask filter-cost
+//! --peers`), it then measures uf-ahrs's VQF, Mahony and Madgwick the same
+//! way: each made as uf-ahrs's README shows (`new(sample period, default
+//! parameters)`), warmed up on the same samples, then one `update_imu` (6D)
+//! and one `update` (9D) on the same input as ours; each first row names
+//! the filter's state size.
 
 #![no_std]
 #![no_main]
@@ -25,6 +32,89 @@ const ROWS: [&str; 4] = [
     "Quat::integrate",
     "Smoother::update",
 ];
+
+/// uf-ahrs's filters and their rows (`filter`, `update`, then its state
+/// size): 6D, then 9D, per filter.
+#[cfg(feature = "attitude-peers")]
+mod peers {
+    use core::hint::black_box;
+    use core::time::Duration;
+
+    use rigtform::Cvec3;
+    use rigtform_embedded::measure;
+    use uf_ahrs::{Ahrs, Madgwick, MadgwickParams, Mahony, MahonyParams, Vqf, VqfParams};
+
+    use super::{decimal, empty, sample};
+
+    /// BROAD's sample period, the one ours runs at.
+    const PERIOD: Duration = Duration::from_micros(3500);
+
+    /// The rows, in the order of [`measure_all`]'s brackets.
+    pub const ROWS: [&str; 6] = [
+        "uf-ahrs Vqf::update_imu (6D)",
+        "uf-ahrs Vqf::update (9D)",
+        "uf-ahrs Mahony::update_imu (6D)",
+        "uf-ahrs Mahony::update (9D)",
+        "uf-ahrs Madgwick::update_imu (6D)",
+        "uf-ahrs Madgwick::update (9D)",
+    ];
+
+    fn vector(v: Cvec3) -> nalgebra::Vector3<f32> {
+        nalgebra::Vector3::new(v.x, v.y, v.z)
+    }
+
+    /// Announces the rows, the first of each filter with its state size.
+    pub fn announce() {
+        let sizes = [
+            core::mem::size_of::<Vqf>(),
+            core::mem::size_of::<Mahony>(),
+            core::mem::size_of::<Madgwick>(),
+        ];
+        for (pair, size) in ROWS.chunks(2).zip(sizes) {
+            let mut digits = [0u8; 10];
+            measure::row(1, &[pair[0], "state", decimal(size, &mut digits), "bytes"]);
+            measure::row(1, &[pair[1]]);
+        }
+    }
+
+    /// `six` and `nine` warmed up as ours are, then one 6D and one 9D
+    /// update each, bracketed.
+    fn measure(mut six: impl Ahrs, mut nine: impl Ahrs) {
+        for i in 0..1200 {
+            let (gyr, acc, mag) = sample(i);
+            six.update_imu(vector(gyr), vector(acc));
+            nine.update(vector(gyr), vector(acc), vector(mag));
+        }
+        let (gyr, acc, mag) = sample(1200);
+        let (gyr, acc, mag) = (vector(gyr), vector(acc), vector(mag));
+
+        empty();
+        measure::start();
+        black_box(black_box(&mut six).update_imu(black_box(gyr), black_box(acc)));
+        measure::end();
+
+        empty();
+        measure::start();
+        black_box(black_box(&mut nine).update(black_box(gyr), black_box(acc), black_box(mag)));
+        measure::end();
+    }
+
+    /// Every row's brackets, in the order of [`ROWS`].
+    pub fn measure_all() {
+        measure(
+            Vqf::new(PERIOD, VqfParams::default()),
+            Vqf::new(PERIOD, VqfParams::default()),
+        );
+        measure(
+            Mahony::new(PERIOD, MahonyParams::default()),
+            Mahony::new(PERIOD, MahonyParams::default()),
+        );
+        measure(
+            Madgwick::new(PERIOD, MadgwickParams::default()),
+            Madgwick::new(PERIOD, MadgwickParams::default()),
+        );
+    }
+}
 
 /// An empty bracket: the calibration of the measured one after it.
 fn empty() {
@@ -80,6 +170,8 @@ fn main() -> ! {
     for name in &ROWS[1..] {
         measure::row(1, &[name]);
     }
+    #[cfg(feature = "attitude-peers")]
+    peers::announce();
 
     empty();
     measure::start();
@@ -106,7 +198,13 @@ fn main() -> ! {
     black_box(black_box(&mut smoother).update(black_box(q), black_box(0.0035)));
     measure::end();
 
+    #[cfg(feature = "attitude-peers")]
+    peers::measure_all();
+
+    #[cfg(not(feature = "attitude-peers"))]
     measure::done(ROWS.len());
+    #[cfg(feature = "attitude-peers")]
+    measure::done(ROWS.len() + peers::ROWS.len());
     debug::exit(debug::EXIT_SUCCESS);
     loop {
         cortex_m::asm::wfi();

@@ -1,8 +1,10 @@
 //! Runs `rigtform`'s orientation filter on real IMU recordings and scores
-//! it with the BROAD benchmark's metric, beside VQF run on the same CSVs in
-//! the same run (`tools/vqf_broad.py`, which needs `pip install vqf`) and the
-//! published figures of Madgwick and Mahony; writes a plot of the error over
-//! time.
+//! it with the BROAD benchmark's metric, beside its peers run on the same
+//! samples in the same run: VQF and x-io's Fusion from PyPI
+//! (`tools/vqf_broad.py` and `tools/fusion_broad.py`, which need
+//! `pip install vqf imufusion`), uf-ahrs's VQF, Mahony and Madgwick (in
+//! process, [`uf_ahrs`]), and the published figures of Madgwick and Mahony;
+//! writes a plot of the error over time.
 //!
 //! ```sh
 //! cargo run --release -p rigtform-compare --bin broad -- ../shared/data/imu/broad_*.csv \
@@ -14,7 +16,8 @@
 //! and its origin are described in the README's IMU section.
 
 mod plot;
-mod vqf;
+mod pypi;
+mod uf_ahrs;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -35,7 +38,8 @@ struct Args {
     /// Where to write the PNG plot of the error over time (BROAD trials).
     #[arg(long)]
     plot: Option<PathBuf>,
-    /// The Python interpreter that runs VQF (it needs the `vqf` package).
+    /// The Python interpreter that runs VQF and Fusion (it needs the `vqf`
+    /// and `imufusion` packages).
     #[arg(long, default_value = "python3")]
     python: String,
     /// The script that runs VQF, `tools/vqf_broad.py` of the repository
@@ -43,6 +47,11 @@ struct Args {
     /// next to the binary, else `tools/vqf_broad.py` in a folder above it).
     #[arg(long)]
     vqf_script: Option<PathBuf>,
+    /// The script that runs Fusion, `tools/fusion_broad.py` of the
+    /// repository (found as the VQF script is, through
+    /// `RIGTFORM_FUSION_SCRIPT`).
+    #[arg(long)]
+    fusion_script: Option<PathBuf>,
 }
 
 /// Published RMSEs in degrees on a BROAD trial: Madgwick and Mahony with
@@ -81,6 +90,11 @@ pub struct Trial {
     /// VQF's 6D and 9D runs over the same samples.
     pub vqf_six: Run,
     pub vqf_nine: Run,
+    /// Fusion's 6D and 9D runs.
+    pub fusion_six: Run,
+    pub fusion_nine: Run,
+    /// uf-ahrs's runs, in the order of [`uf_ahrs::NAMES`].
+    pub uf: [uf_ahrs::Runs; 3],
 }
 
 fn main() -> ExitCode {
@@ -115,10 +129,13 @@ fn evaluate(args: &Args) -> Result<(), String> {
         }
     }
     let params = FilterParams::DEFAULT;
-    let script = if trials.is_empty() {
+    let scripts = if trials.is_empty() {
         None
     } else {
-        Some(vqf::find_script(args.vqf_script.as_deref())?)
+        Some((
+            pypi::VQF.find_script(args.vqf_script.as_deref())?,
+            pypi::FUSION.find_script(args.fusion_script.as_deref())?,
+        ))
     };
     let trials: Vec<Trial> = trials
         .into_iter()
@@ -131,13 +148,21 @@ fn evaluate(args: &Args) -> Result<(), String> {
                 ));
             }
             let nine = metric::run(&samples, params, true);
-            let script = script.as_deref().unwrap_or(Path::new(""));
-            let (vqf_six, vqf_nine) = vqf::run(&args.python, script, path, &samples)?;
+            let (vqf_script, fusion_script) = match &scripts {
+                Some((vqf, fusion)) => (vqf.as_path(), fusion.as_path()),
+                None => (Path::new(""), Path::new("")),
+            };
+            let (vqf_six, vqf_nine) = pypi::VQF.run(&args.python, vqf_script, path, &samples)?;
+            let (fusion_six, fusion_nine) =
+                pypi::FUSION.run(&args.python, fusion_script, path, &samples)?;
             let trial = Trial {
                 six,
                 nine,
                 vqf_six,
                 vqf_nine,
+                fusion_six,
+                fusion_nine,
+                uf: uf_ahrs::run_all(&samples),
                 name,
                 samples,
             };
@@ -155,6 +180,7 @@ fn evaluate(args: &Args) -> Result<(), String> {
         .collect::<Result<_, String>>()?;
     if !trials.is_empty() {
         print_table(&trials);
+        print_peers(&trials);
     }
     for (name, samples) in &fusion {
         print_fusion_summary(name, samples);
@@ -267,6 +293,90 @@ fn print_table(trials: &[Trial]) {
             t.name,
             t.samples.len()
         );
+    }
+}
+
+/// How each filter of [`print_peers`] runs.
+const SETTINGS: &str = "\
+- ours: OrientationFilter::new(FilterParams::DEFAULT), dt 3.5 ms.
+- VQF (PyPI): `vqf` VQF(0.0035).updateBatch, default parameters (tools/vqf_broad.py).
+- uf-ahrs 0.2.2: Vqf / Mahony / Madgwick ::new(3.5 ms, *Params::default()) (Mahony kp 0.74, ki 0.0012; \
+Madgwick beta 0.05), Ahrs::update (9D) and update_imu (6D); its north-west-up estimates turned to east-north-up.
+- Fusion (PyPI): `imufusion` Ahrs with gain 0.5, gyroscope range 2000 deg/s, acceleration and magnetic rejection \
+10 deg, rejection timeout 5 s, sample rate 2000/7 Hz, ENU, its gyroscope bias (offset) algorithm in front, \
+as its README recommends; deg/s and g in (tools/fusion_broad.py).
+Every filter starts at the first sample, without warm-up or alignment; the scored samples are the movement phase's.";
+
+/// `rmse` of `run`, with the count of non-finite estimates if any.
+fn cell(run: &Run, rmse: f64) -> String {
+    let bad = run.estimates.iter().filter(|q| !q.is_finite()).count();
+    if bad == 0 && rmse.is_finite() {
+        format!("{rmse:.2}")
+    } else {
+        format!("{rmse:.2} ({bad} non-finite)")
+    }
+}
+
+/// Every filter's 6D inclination and 9D total error, trial by trial, and
+/// their means over the trials.
+fn print_peers(trials: &[Trial]) {
+    println!("\nAll filters on the same samples, the same metric (RMSE in degrees over the movement phase):");
+    println!("{SETTINGS}");
+    let names: Vec<&str> = ["ours", pypi::VQF.name]
+        .into_iter()
+        .chain(uf_ahrs::NAMES)
+        .chain([pypi::FUSION.name])
+        .collect();
+    type Pick = fn(&Trial) -> [&Run; 6];
+    let six: Pick = |t| {
+        [
+            &t.six,
+            &t.vqf_six,
+            &t.uf[0].six,
+            &t.uf[1].six,
+            &t.uf[2].six,
+            &t.fusion_six,
+        ]
+    };
+    let nine: Pick = |t| {
+        [
+            &t.nine,
+            &t.vqf_nine,
+            &t.uf[0].nine,
+            &t.uf[1].nine,
+            &t.uf[2].nine,
+            &t.fusion_nine,
+        ]
+    };
+    type Metric = fn(&Run) -> f64;
+    let tables: [(&str, Pick, Metric); 2] = [
+        ("6D inclination", six, |r| r.rmse.inclination),
+        ("9D total", nine, |r| r.rmse.total),
+    ];
+    for (title, pick, metric) in tables {
+        println!("\n{title}:\n");
+        println!("| trial | {} |", names.join(" | "));
+        println!("| --- |{}", " ---: |".repeat(names.len()));
+        let mut sums = [0.0; 6];
+        for t in trials {
+            let runs = pick(t);
+            let cells: Vec<String> = runs.iter().map(|r| cell(r, metric(r))).collect();
+            for (sum, r) in sums.iter_mut().zip(runs) {
+                *sum += metric(r);
+            }
+            println!("| {} | {} |", t.name, cells.join(" | "));
+        }
+        if trials.len() > 1 {
+            let means: Vec<String> = sums
+                .iter()
+                .map(|s| format!("{:.2}", s / trials.len() as f64))
+                .collect();
+            println!(
+                "| mean of {} trials | {} |",
+                trials.len(),
+                means.join(" | ")
+            );
+        }
     }
 }
 
