@@ -387,7 +387,7 @@ pub fn filter_budget(features: Option<&str>, peers: bool, write_page: bool) -> R
         print!("\n{}", filter_table(&costs));
         if write_page {
             let old = std::fs::read_to_string(&page_path)?;
-            let section = filter_section(&costs, &crate::report::today());
+            let section = filter_section(&costs, &page::today());
             page::write_whole(&page_path, &page::splice(&old, page::ATTITUDE, &section)?)?;
             say(format!("{PAGE}: the attitude block is regenerated"));
         }
