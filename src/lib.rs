@@ -235,12 +235,23 @@ mod vec;
 #[cfg(any(kani, feature = "kernel-contracts"))]
 #[doc(hidden)]
 pub mod kani_kernels {
+    /// What Kani's square root assumes of its result (`float/sqrt_kani.rs`).
+    #[cfg(feature = "kernel-contracts")]
+    pub use crate::float::is_correctly_rounded_sqrt;
     pub use crate::float::{atan2, sin_cos, sqrt};
     /// slerp's f64 angle and sine, which `proofs/gappa/angle_f64.g`,
     /// `angle_f64_above.g` and `sin_f64.g` model.
     #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
     pub use crate::float::{atan2_of_root, sin_to_quarter_turn};
 }
+
+/// The conditions of the contracts on the core operations
+/// (`src/features/impl_kani.rs`), under Kani and with the
+/// `kernel-contracts` feature, for `rigtform-proofs`' check of them. Not
+/// part of the API.
+#[cfg(any(kani, feature = "kernel-contracts"))]
+#[doc(hidden)]
+pub use features::impl_kani as kani_contracts;
 
 pub use matrix::Matrix4;
 pub use matrix3::Matrix3;

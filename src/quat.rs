@@ -101,6 +101,11 @@ impl Mul<Quat> for Quat {
     /// let v = Cvec3::new(1.0, 2.0, 3.0);
     /// assert!(((a * b) * v - a * (b * v)).norm() < 1e-5);
     /// ```
+    #[cfg_attr(
+        kani,
+        kani::requires(crate::kani_contracts::quat_mul_requires(self, o))
+    )]
+    #[cfg_attr(kani, kani::ensures(|r: &Quat| crate::kani_contracts::quat_mul_ensures(self, o, *r)))]
     #[inline]
     fn mul(self, o: Quat) -> Quat {
         product::hamilton(self, o)
@@ -210,6 +215,8 @@ impl Mul<Cvec3> for Quat {
     /// let v = Quat::from_rotation_y(PI) * Cvec3::new(1.0, 2.0, 3.0);
     /// assert!((v - Cvec3::new(-1.0, 2.0, -3.0)).norm() < 1e-6);
     /// ```
+    #[cfg_attr(kani, kani::requires(crate::kani_contracts::rotate_requires(self, v)))]
+    #[cfg_attr(kani, kani::ensures(|r: &Cvec3| crate::kani_contracts::rotate_ensures(self, v, *r)))]
     #[inline]
     fn mul(self, v: Cvec3) -> Cvec3 {
         let u = self.vector();

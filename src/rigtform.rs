@@ -155,6 +155,11 @@ impl RigTForm {
     /// let i = a * a.inv();
     /// assert!(i.t.norm() < 1e-6 && i.r.angle_to(Quat::IDENTITY) < 1e-6);
     /// ```
+    #[cfg_attr(
+        kani,
+        kani::requires(crate::kani_contracts::rigtform_inv_requires(self))
+    )]
+    #[cfg_attr(kani, kani::ensures(|r: &RigTForm| crate::kani_contracts::rigtform_inv_ensures(self, *r)))]
     #[inline]
     #[must_use]
     pub fn inv(self) -> Self {
@@ -178,6 +183,11 @@ impl RigTForm {
     /// let a = RigTForm::new(Cvec3::new(5.0, 0.0, 0.0), Quat::from_rotation_z(FRAC_PI_2));
     /// assert!((a.transform_point(Cvec3::X) - Cvec3::new(5.0, 1.0, 0.0)).norm() < 1e-6);
     /// ```
+    #[cfg_attr(
+        kani,
+        kani::requires(crate::kani_contracts::transform_point_requires(self, p))
+    )]
+    #[cfg_attr(kani, kani::ensures(|r: &Cvec3| crate::kani_contracts::transform_point_ensures(*r)))]
     #[inline]
     #[must_use]
     pub fn transform_point(self, p: Cvec3) -> Cvec3 {
@@ -315,6 +325,11 @@ impl Mul<RigTForm> for RigTForm {
     /// let p = Cvec4::from_point(Cvec3::new(1.0, 2.0, 3.0));
     /// assert!(((a * b) * p - a * (b * p)).norm() < 1e-6);
     /// ```
+    #[cfg_attr(
+        kani,
+        kani::requires(crate::kani_contracts::rigtform_mul_requires(self, o))
+    )]
+    #[cfg_attr(kani, kani::ensures(|r: &RigTForm| crate::kani_contracts::rigtform_mul_ensures(self, o, *r)))]
     #[inline]
     fn mul(self, o: RigTForm) -> RigTForm {
         RigTForm::new(self.t + self.r * o.t, self.r * o.r)

@@ -17,20 +17,29 @@
 ///   libm's `sqrtf` is the same instruction there, but in inline assembly,
 ///   which a loop vectorizer cannot look into.
 /// - Elsewhere it is libm's `sqrtf`.
+/// - Under Kani (`cfg(kani)`), which reads none of these, it is the one
+///   f32 that the correctly rounded square root is, described instead of
+///   computed (`float/sqrt_kani.rs`).
 #[inline]
 #[must_use]
 pub fn sqrt(x: f32) -> f32 {
-    #[cfg(all(target_arch = "arm", target_abi = "eabihf"))]
+    #[cfg(kani)]
+    return super::sqrt_kani::sqrt(x);
+    #[cfg(all(target_arch = "arm", target_abi = "eabihf", not(kani)))]
     return fpu_sqrt(x);
-    #[cfg(any(
-        all(target_arch = "x86_64", target_feature = "sse"),
-        all(target_arch = "aarch64", target_feature = "neon")
+    #[cfg(all(
+        any(
+            all(target_arch = "x86_64", target_feature = "sse"),
+            all(target_arch = "aarch64", target_feature = "neon")
+        ),
+        not(kani)
     ))]
     return vector_unit_sqrt(x);
     #[cfg(not(any(
         all(target_arch = "arm", target_abi = "eabihf"),
         all(target_arch = "x86_64", target_feature = "sse"),
-        all(target_arch = "aarch64", target_feature = "neon")
+        all(target_arch = "aarch64", target_feature = "neon"),
+        kani
     )))]
     return libm::sqrtf(x);
 }
@@ -41,7 +50,7 @@ pub fn sqrt(x: f32) -> f32 {
 ///
 /// The intrinsics are `#[target_feature]` functions, `unsafe` to call
 /// from a function that does not enable the feature itself.
-#[cfg(all(target_arch = "x86_64", target_feature = "sse"))]
+#[cfg(all(target_arch = "x86_64", target_feature = "sse", not(kani)))]
 #[allow(unsafe_code)]
 #[inline(always)]
 fn vector_unit_sqrt(x: f32) -> f32 {
@@ -63,7 +72,7 @@ fn vector_unit_sqrt(x: f32) -> f32 {
 ///
 /// The intrinsics are `#[target_feature]` functions, `unsafe` to call
 /// from a function that does not enable the feature itself.
-#[cfg(all(target_arch = "aarch64", target_feature = "neon"))]
+#[cfg(all(target_arch = "aarch64", target_feature = "neon", not(kani)))]
 #[allow(unsafe_code)]
 #[inline(always)]
 fn vector_unit_sqrt(x: f32) -> f32 {
@@ -86,7 +95,7 @@ fn vector_unit_sqrt(x: f32) -> f32 {
 /// which stable Rust does not expose for Arm. So the value goes in and out
 /// through a core register, and `s0` is saved and restored around the
 /// instruction (five instructions in all).
-#[cfg(all(target_arch = "arm", target_abi = "eabihf"))]
+#[cfg(all(target_arch = "arm", target_abi = "eabihf", not(kani)))]
 #[allow(unsafe_code)]
 #[inline]
 fn fpu_sqrt(x: f32) -> f32 {
