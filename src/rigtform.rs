@@ -325,11 +325,6 @@ impl Mul<RigTForm> for RigTForm {
     /// let p = Cvec4::from_point(Cvec3::new(1.0, 2.0, 3.0));
     /// assert!(((a * b) * p - a * (b * p)).norm() < 1e-6);
     /// ```
-    #[cfg_attr(
-        kani,
-        kani::requires(crate::kani_contracts::rigtform_mul_requires(self, o))
-    )]
-    #[cfg_attr(kani, kani::ensures(|r: &RigTForm| crate::kani_contracts::rigtform_mul_ensures(self, o, *r)))]
     #[inline]
     fn mul(self, o: RigTForm) -> RigTForm {
         RigTForm::new(self.t + self.r * o.t, self.r * o.r)
