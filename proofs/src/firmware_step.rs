@@ -52,6 +52,7 @@ pub fn firmware_step(attitude: Quat, gyro: Cvec3, dt: f32, target: Quat, follow:
 /// description of the correctly rounded one).
 #[cfg(kani)]
 #[kani::proof]
+#[kani::solver(cadical)]
 #[kani::stub_verified(Quat::normalize)]
 #[kani::stub_verified(Quat::slerp)]
 fn firmware_step_gives_a_finite_attitude() {

@@ -282,36 +282,43 @@ mod contract_harnesses {
         RigTForm::new(any_vec(), any_quat())
     }
 
+    #[kani::solver(cadical)]
     #[kani::proof_for_contract(Quat::mul_quat)]
     fn quat_product() {
         let _ = any_quat().mul_quat(any_quat());
     }
 
+    #[kani::solver(cadical)]
     #[kani::proof_for_contract(Quat::normalize)]
     fn quat_normalize() {
         let _ = any_quat().normalize();
     }
 
+    #[kani::solver(cadical)]
     #[kani::proof_for_contract(Quat::inv)]
     fn quat_inv() {
         let _ = any_quat().inv();
     }
 
+    #[kani::solver(cadical)]
     #[kani::proof_for_contract(Quat::mul_vec3)]
     fn quat_rotates_a_vector() {
         let _ = any_quat().mul_vec3(any_vec());
     }
 
+    #[kani::solver(cadical)]
     #[kani::proof_for_contract(Quat::slerp)]
     fn quat_slerp() {
         let _ = any_quat().slerp(any_quat(), kani::any());
     }
 
+    #[kani::solver(cadical)]
     #[kani::proof_for_contract(RigTForm::inv)]
     fn rig_tform_inv() {
         let _ = any_rig_tform().inv();
     }
 
+    #[kani::solver(cadical)]
     #[kani::proof_for_contract(RigTForm::transform_point)]
     fn rig_tform_transform_point() {
         let _ = any_rig_tform().transform_point(any_vec());
