@@ -187,8 +187,11 @@ pub fn slerp_requires(a: Quat, b: Quat, alpha: f32) -> bool {
 /// measured bound is [`accuracy::UNIT_NORM_ERROR`](crate::accuracy::UNIT_NORM_ERROR).)
 #[must_use]
 pub fn slerp_ensures(a: Quat, alpha: f32, r: Quat) -> bool {
-    r.is_finite()
-        && (alpha != 0.0 || r.to_array().map(f32::to_bits) == a.to_array().map(f32::to_bits))
+    let same = r.x.to_bits() == a.x.to_bits()
+        && r.y.to_bits() == a.y.to_bits()
+        && r.z.to_bits() == a.z.to_bits()
+        && r.w.to_bits() == a.w.to_bits();
+    r.is_finite() && (alpha != 0.0 || same)
 }
 
 /// A transform the contracts take: its rotation's components in [-1, 1],
