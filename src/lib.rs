@@ -97,7 +97,11 @@
 //!   root mean square of the orientation error over a recording.
 //! - **Kani**: a model checker for Rust; the harnesses of `rigtform-proofs`
 //!   are written for it (and have not been run through it: they run as
-//!   random tests).
+//!   random tests). Under `cfg(kani)` the crate reads as Kani needs it (no
+//!   intrinsic, no inline assembly), implements `kani::Arbitrary` for
+//!   `Quat` (unit), `Cvec3` and `RigTForm`, and puts contracts on its core
+//!   operations, for firmware that runs `cargo kani` on its own code
+//!   (`docs/kani.md` in the repository).
 //!
 //! # Numerics contract
 //!
