@@ -67,10 +67,12 @@ impl Target {
             // The slices in blocks the compiler vectorizes.
             "portable_lanes" => self.holds("desktop64") && !self.holds("x86_sse_lanes"),
             // The square root is the FPU's `vsqrt.f32` (inline assembly).
-            "arm_fpu_sqrt" => self.arch == "arm" && self.abi == "eabihf",
+            "arm_fpu_sqrt" => self.arch == "arm" && self.abi == "eabihf" && !self.kani,
             // The square root is the vector unit's, through an intrinsic
             // a loop vectorizes.
-            "vector_unit_sqrt" => (x86_64 && self.has("sse")) || (aarch64 && self.has("neon")),
+            "vector_unit_sqrt" => {
+                ((x86_64 && self.has("sse")) || (aarch64 && self.has("neon"))) && !self.kani
+            }
             // The float kernels re-exported (`rigtform::kani_kernels`) for
             // the proofs crate's stubs and contract tests.
             "kernels_exported" => self.kani || self.kernel_contracts,

@@ -30,6 +30,8 @@ mod norm;
 mod reduce;
 mod sin_cos;
 mod sqrt;
+#[cfg(any(kernels_exported, test))]
+mod sqrt_kani;
 #[cfg(test)]
 pub(crate) mod sweep;
 
@@ -42,6 +44,8 @@ pub(crate) use norm::SQUARES_UNDERFLOW;
 pub(crate) use norm::{needs_no_rescaling, scale_for_squares, ScaledSquares};
 pub(crate) use sin_cos::sin3;
 pub use sqrt::sqrt;
+#[cfg(feature = "kernel-contracts")]
+pub use sqrt_kani::is_correctly_rounded_sqrt;
 
 /// Four-quadrant arctangent of `y / x`, in [-pi, pi], with IEEE 754's
 /// results for zeros and infinities (`atan2(+-0, -0) = +-pi`,

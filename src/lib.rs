@@ -97,7 +97,11 @@
 //!   root mean square of the orientation error over a recording.
 //! - **Kani**: a model checker for Rust; the harnesses of `rigtform-proofs`
 //!   are written for it (and have not been run through it: they run as
-//!   random tests).
+//!   random tests). Under `cfg(kani)` the crate reads as Kani needs it (no
+//!   intrinsic, no inline assembly), implements `kani::Arbitrary` for
+//!   `Quat` (unit), `Cvec3` and `RigTForm`, and puts contracts on its core
+//!   operations, for firmware that runs `cargo kani` on its own code
+//!   (`docs/kani.md` in the repository).
 //!
 //! # Numerics contract
 //!
@@ -221,12 +225,23 @@ mod vec;
 #[cfg(kernels_exported)]
 #[doc(hidden)]
 pub mod kani_kernels {
+    /// What Kani's square root assumes of its result (`float/sqrt_kani.rs`).
+    #[cfg(feature = "kernel-contracts")]
+    pub use crate::float::is_correctly_rounded_sqrt;
     pub use crate::float::{atan2, sin_cos, sqrt};
     /// slerp's f64 angle and sine, which `proofs/gappa/angle_f64.g`,
     /// `angle_f64_above.g` and `sin_f64.g` model.
     #[cfg(desktop64)]
     pub use crate::quat::kernels_f64::{atan2_of_root, sin_to_quarter_turn};
 }
+
+/// The conditions of the contracts on the core operations
+/// (`src/features/impl_kani.rs`), under Kani and with the
+/// `kernel-contracts` feature, for `rigtform-proofs`' check of them. Not
+/// part of the API.
+#[cfg(kernels_exported)]
+#[doc(hidden)]
+pub use features::impl_kani as kani_contracts;
 
 pub use matrix::{Matrix4, NotRigid};
 pub use matrix3::Matrix3;

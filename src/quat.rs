@@ -104,7 +104,8 @@ impl Mul<Quat> for Quat {
     /// ```
     #[inline]
     fn mul(self, o: Quat) -> Quat {
-        product::hamilton(self, o)
+        // Through the inherent method, which carries the Kani contract.
+        self.mul_quat(o)
     }
 }
 
@@ -213,10 +214,17 @@ impl Mul<Cvec3> for Quat {
     /// ```
     #[inline]
     fn mul(self, v: Cvec3) -> Cvec3 {
-        let u = self.vector();
-        let t = u.cross(v) * 2.0;
-        v + t * self.w + u.cross(t)
+        // Through the inherent method, which carries the Kani contract.
+        self.mul_vec3(v)
     }
+}
+
+/// `q * v`, the formula of `Mul<Cvec3> for Quat` (its doc).
+#[inline]
+fn rotate(q: Quat, v: Cvec3) -> Cvec3 {
+    let u = q.vector();
+    let t = u.cross(v) * 2.0;
+    v + t * q.w + u.cross(t)
 }
 
 impl Mul<Cvec4> for Quat {

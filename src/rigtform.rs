@@ -154,6 +154,11 @@ impl RigTForm {
     /// let i = a * a.inv();
     /// assert!(i.t.norm() < 1e-6 && i.r.angle_to(Quat::IDENTITY) < 1e-6);
     /// ```
+    #[cfg_attr(
+        kani,
+        kani::requires(crate::kani_contracts::rigtform_inv_requires(self))
+    )]
+    #[cfg_attr(kani, kani::ensures(|r: &RigTForm| crate::kani_contracts::rigtform_inv_ensures(self, *r)))]
     #[inline]
     #[must_use]
     pub fn inv(self) -> Self {
@@ -177,6 +182,11 @@ impl RigTForm {
     /// let a = RigTForm::new(Cvec3::new(5.0, 0.0, 0.0), Quat::from_rotation_z(FRAC_PI_2));
     /// assert!((a.transform_point(Cvec3::X) - Cvec3::new(5.0, 1.0, 0.0)).norm() < 1e-6);
     /// ```
+    #[cfg_attr(
+        kani,
+        kani::requires(crate::kani_contracts::transform_point_requires(self, p))
+    )]
+    #[cfg_attr(kani, kani::ensures(|r: &Cvec3| crate::kani_contracts::transform_point_ensures(*r)))]
     #[inline]
     #[must_use]
     pub fn transform_point(self, p: Cvec3) -> Cvec3 {

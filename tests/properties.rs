@@ -15,6 +15,9 @@ use rigtform::{accuracy, Cvec3, Cvec4, EulerRot, Matrix4, Quat, RigTForm};
 use rigtform_proofs::draw::Draws;
 use rigtform_proofs::laws::registry::LAWS;
 use rigtform_proofs::laws::{self, assert_holds};
+use testkit::strategies::{
+    finite_quat, mixed_f32, mixed_within, normalized_quat, quat_within, vec_within,
+};
 use testkit::{key_walk, max_entry_diff, pow_tol, rig_tform, slerp_tol, unit_quat, vec3};
 
 /// The angle of a unit quaternion as the notes' power operator sees it, 2 atan2(|v|, w).
@@ -384,6 +387,122 @@ proptest! {
         }
     }
 
+}
+
+/// 2^20: the bound on translations and vectors of the laws' properties on
+/// mixed draws, beyond any scene or sensor value in metres.
+const MILLION: f32 = 1_048_576.0;
+
+/// 2^60: the laws' bound where a product must stay finite.
+const TWO_TO_60: f32 = 1.152_921_5e18;
+
+/// Every Euler order.
+fn euler_order() -> impl Strategy<Value = EulerRot> {
+    prop::sample::select(EulerRot::ALL.to_vec())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 10_000,
+        max_global_rejects: 100_000,
+        ..ProptestConfig::default()
+    })]
+
+    // The laws again, on the draws that hunt edges: components from
+    // subnormal to f32::MAX (normalized where a law wants unit inputs),
+    // edge values, and the branches uniform rotations all but never meet
+    // (nearby pairs, pure reals, half turns, exactly opposite directions).
+    // Each property stands for a harness of proofs/src/harnesses.rs that
+    // repeated it on the Kani stand-in and that Kani was not expected to
+    // finish (several symbolic divisions, square roots and polynomials at
+    // once).
+
+    #[test]
+    fn law_products_multiply_norms_from_tiny_to_huge(a in quat_within(MILLION), b in quat_within(MILLION)) {
+        // Precondition: squared norms in [2^-40, 2^40] (no underflow).
+        let n = |q: Quat| f64::from(q.norm_squared());
+        prop_assume!((9.1e-13..=1.1e12).contains(&n(a)) && (9.1e-13..=1.1e12).contains(&n(b)));
+        assert_holds(laws::product_norm_is_multiplicative(a, b));
+    }
+
+    #[test]
+    fn law_quat_times_inverse_is_real_from_tiny_to_huge(q in quat_within(TWO_TO_60)) {
+        assert_holds(laws::product_with_inverse_is_real(q));
+    }
+
+    #[test]
+    fn law_rotations_of_normalized_quaternions_preserve_length(q in normalized_quat(), v in vec_within(MILLION)) {
+        assert_holds(laws::rotation_preserves_length(q, v));
+    }
+
+    #[test]
+    fn law_pow_is_unit_for_every_finite_input(q in finite_quat(), w in mixed_f32(), pure_real in any::<bool>(), alpha in mixed_f32()) {
+        // Pure reals take their own path, which random components never do.
+        let q = if pure_real { Quat::from_wxyz(w, 0.0, 0.0, 0.0) } else { q };
+        assert_holds(laws::pow_is_unit(q, alpha));
+    }
+
+    #[test]
+    fn law_slerp_is_unit_and_takes_the_short_way_for_every_finite_alpha(a in normalized_quat(), b in normalized_quat(), near in any::<bool>(), turn in mixed_within(4.9e-4), alpha in mixed_f32()) {
+        // Half the pairs within 2^-11 rad of each other: the small-angle branch.
+        let b = if near { (a * Quat::from_rotation_x(turn)).normalize() } else { b };
+        assert_holds(laws::slerp_is_unit(a, b, alpha));
+        assert_holds(laws::slerp_takes_the_short_way(a, b, alpha));
+    }
+
+    #[test]
+    fn law_slerp_of_normalized_quaternions_turns_by_alpha_times_the_angle(a in normalized_quat(), b in normalized_quat(), alpha in 0.0f32..=1.0) {
+        assert_holds(laws::slerp_turns_by_alpha_times_the_angle(a, b, alpha));
+    }
+
+    #[test]
+    fn law_nlerp_and_blend_of_normalized_quaternions_are_unit(a in normalized_quat(), b in normalized_quat(), c in normalized_quat(), alpha in 0.0f32..=1.0, w in prop::array::uniform3(mixed_within(MILLION))) {
+        assert_holds(laws::nlerp_is_unit(a, b, alpha));
+        assert_holds(laws::blend_is_unit_or_identity(&[(a, w[0]), (b, w[1]), (c, w[2])]));
+    }
+
+    #[test]
+    fn law_rigid_identities_with_normalized_rotations(r in normalized_quat(), t in vec_within(MILLION), v in vec_within(MILLION), point in any::<bool>()) {
+        let a = RigTForm::new(t, r);
+        assert_holds(laws::rigid_product_with_inverse_is_identity(a));
+        assert_holds(laws::rigid_inverse_is_an_involution(a));
+        assert_holds(laws::rigid_inverse_matches_matrix_inverse(a));
+        let c = Cvec4::new(v.x, v.y, v.z, if point { 1.0 } else { 0.0 });
+        assert_holds(laws::rigid_matrix_moves_points_as_the_transform(a, c));
+    }
+
+    #[test]
+    fn law_euler_angles_give_back_normalized_rotations(q in normalized_quat(), order in euler_order()) {
+        assert_holds(laws::euler_angles_give_back_the_rotation(q, order));
+    }
+
+    #[test]
+    fn law_from_matrix_inverts_normalized_rotations_and_half_turns(q in normalized_quat(), v in vec_within(MILLION), half_turn in any::<bool>()) {
+        // Half turns (w = 0): the trace is -1, so x, y or z is the largest
+        // of Shepperd's four.
+        let q = if half_turn {
+            prop_assume!(v != Cvec3::ZERO);
+            Quat::from_wxyz(0.0, v.x, v.y, v.z).normalize()
+        } else {
+            q
+        };
+        assert_holds(laws::from_matrix_inverts_from_quat(q));
+    }
+
+    #[test]
+    fn law_rotation_arc_takes_from_to_to_also_when_opposite(from in vec_within(MILLION), to in vec_within(MILLION), nudge in mixed_within(1e-3), kind in 0u32..3) {
+        // A third exactly opposite (-2 from: the cross product is exactly
+        // zero, the half turn about a perpendicular), a third nearly.
+        let to = match kind {
+            0 => to,
+            1 => from * -2.0,
+            _ => from * -2.0 + Cvec3::new(nudge, 0.0, 0.0),
+        };
+        // Precondition: squared lengths in [2^-40, 2^80].
+        let moderate = |v: Cvec3| (9.094_947e-13..=1.208_925_8e24).contains(&v.norm_squared());
+        prop_assume!(moderate(from) && moderate(to));
+        assert_holds(laws::rotation_arc_takes_from_to_to(from, to));
+    }
 }
 
 proptest! {

@@ -1,11 +1,11 @@
 //! The contracts of the float kernels that the Kani harnesses stub.
 //!
-//! The crate's square root is inline assembly on Arm and libm's on other
-//! targets (itself inline assembly on x86), which a model checker cannot
-//! read; its sine, cosine and atan2 are f32 polynomials that a model
-//! checker can follow, but slowly. So the harnesses replace the kernels
-//! they do not need exactly (`src/stubs.rs`) by "any value that meets the
-//! contract". That is sound only if the real kernels meet the contracts:
+//! The crate's square root is an instruction (inline assembly or a
+//! `core::arch` intrinsic) in ordinary builds and, under `cfg(kani)`, the
+//! exact description of the correctly rounded root; its sine, cosine and
+//! atan2 are f32 polynomials that a model checker can follow, but slowly.
+//! So the harnesses replace the kernels they do not need exactly
+//! (`src/stubs.rs`) by "any value that meets the contract". That is sound only if the real kernels meet the contracts:
 //! `kernels_meet_the_contracts_the_proofs_stub_them_by` in this crate's
 //! `tests/kernel_contracts.rs` checks them, with each backend, on edge values and a
 //! sweep of every binade. The contracts are deliberately weak (ranges and
@@ -111,8 +111,8 @@ mod tests {
 
     /// Under the stubs, `pow`'s sines may be off the unit circle by the
     /// whole tolerance: with the normalized axis's `8u` that must stay
-    /// within what `pow_is_unit` allows, or its harness would fail on
-    /// kernels that meet the contract.
+    /// within what `pow_is_unit` allows, or a proof of that law under the
+    /// stubs would fail on kernels that meet the contract.
     #[test]
     fn the_sine_tolerance_fits_what_pow_is_unit_allows() {
         let eight_u = 8.0 / 16_777_216.0;

@@ -15,32 +15,35 @@
 //! Kani fails any float operation that makes a NaN from numbers, such as
 //! `inf - inf`, whatever its result is used for).
 //!
-//! The square root is stubbed by its contract everywhere (`src/stubs.rs`:
-//! it is inline assembly, which Kani cannot read). `pow` also gets its
-//! sine, cosine and atan2 stubbed: its unit norm needs only the Pythagorean
-//! identity, whatever the angle, so the proof then covers every kernel that
-//! meets the contracts (which `src/float.rs` checks the crate's kernels
-//! meet), and nothing about the angle. `slerp`'s unit norm needs accurate
-//! angles, so its harnesses keep the real kernels: polynomials (on
-//! x86-64, where Kani runs, the f64 angle and sines of `quat/slerp/kernels_f64.rs`
-//! for `alpha` in (0, 1]), and for extrapolation beyond 3 pi/4 an argument
-//! reduction in integers that branches.
+//! The square root is stubbed by its contract wherever a harness reaches
+//! it (`src/stubs.rs`): a weaker statement than the library's own square
+//! root under `cfg(kani)` (the correctly rounded one, described exactly),
+//! so each proof covers any root within the contract. `pow` also gets its
+//! sine, cosine and atan2 stubbed: its non-finite input gives NaN whatever
+//! the kernels return within their contracts (which
+//! `tests/kernel_contracts.rs` checks the crate's kernels meet).
 //!
-//! Tractability: the harnesses of exact, bit-level laws (`inv`, `cn`, NaN
-//! out for NaN in, exactness at `alpha = 0`, `None` or finite for the
-//! matrix inverse) take paths of comparisons, sign operations and early
-//! returns, with symbolic arithmetic only where a matrix is invertible.
-//! Three error-bound laws are split for the solver, one harness per
-//! exponent range (`quat_product_multiplies_norms_*`,
+//! Only harnesses Kani is likely to finish are here. The harnesses of
+//! exact, bit-level laws (`inv`, `cn`, NaN out for NaN in, exactness at
+//! `alpha = 0`, `None` or finite for the matrix inverse, the spline's and
+//! the STEP sampler's keys) take paths of comparisons, sign operations and
+//! early returns, with symbolic arithmetic only where a matrix is
+//! invertible. Three error-bound laws are split for the solver, one
+//! harness per exponent range (`quat_product_multiplies_norms_*`,
 //! `normalize_is_unit_*`, `quat_times_inverse_is_real_*`): one or two
 //! symbolic components built from bits in a fixed exponent range, the
 //! others concrete, nothing assumed, and a comment on each saying what
-//! keeps it small; their full-range versions stay as random tests here.
-//! None of them has been run under Kani, so their tractability is a design
-//! argument, not a measured time. The other harnesses that bound an error
-//! hand the solver several symbolic divisions, square roots and
-//! polynomials at once; each says in one line why, as written, it is a
-//! random test and not a proof target.
+//! keeps it small. None of them has been run under Kani, so their
+//! tractability is a design argument, not a measured time. The laws whose
+//! harnesses would hand the solver several symbolic divisions, square
+//! roots and polynomials at once (the norms of `pow`, `slerp`, `nlerp`
+//! and `blend`, rotation, the rigid-body identities, Euler angles,
+//! `from_matrix`, `from_rotation_arc`, and the full ranges of the split
+//! laws) are proptest properties of the library's `tests/properties.rs`
+//! instead, on the same kinds of draws (edge values, components from
+//! subnormal to huge normalized, the rare branches); two random tests stay
+//! here because no property repeats them (`normalize_is_unit_from_subnormal_to_max`
+//! and `pow_turns_as_the_notes_define`).
 //!
 //! `kani::cover!` marks the branches a law is about; the stand-in fails a
 //! harness whose cover no kept draw met, and prints how many met each.
@@ -48,8 +51,7 @@
 #[cfg(not(kani))]
 use crate::kani_stand_in as kani;
 use crate::laws::{self, assert_holds};
-use core::f32::consts::{FRAC_PI_2, PI};
-use rigtform::{Cvec3, Cvec4, EulerRot, Matrix4, Quat, RigTForm};
+use rigtform::{Cvec3, Matrix4, Quat, RigTForm};
 
 /// Runs `body` once under Kani (symbolically: once is all inputs), or on
 /// many random draws under the stand-in.
@@ -63,7 +65,8 @@ fn check(name: &str, body: impl Fn()) {
     crate::kani_stand_in::run(name, body);
 }
 
-/// Any finite `f32`.
+/// Any finite `f32` (for the stand-in tests only).
+#[cfg(not(kani))]
 fn any_finite() -> f32 {
     kani::any_where(|x: &f32| x.is_finite())
 }
@@ -93,24 +96,11 @@ fn any_quat_bits() -> Quat {
     Quat::from_wxyz(kani::any(), kani::any(), kani::any(), kani::any())
 }
 
-/// Any finite quaternion.
+/// Any finite quaternion (for the stand-in tests only).
+#[cfg(not(kani))]
 fn any_finite_quat() -> Quat {
     Quat::from_wxyz(any_finite(), any_finite(), any_finite(), any_finite())
 }
-
-/// A unit quaternion as the laws' preconditions mean it: any finite
-/// non-zero quaternion, normalized (which [`normalize_is_unit`] checks
-/// lands within the laws' tolerance).
-fn any_unit_quat() -> Quat {
-    let q = any_finite_quat();
-    // Precondition of normalize_is_unit: not zero.
-    kani::assume(q != Quat::from_wxyz(0.0, 0.0, 0.0, 0.0));
-    q.normalize()
-}
-
-/// 2^20: a solver bound on translations and vectors, far inside the laws'
-/// 2^40, and beyond any scene or sensor value in metres.
-const MILLION: f32 = 1_048_576.0;
 
 /// 2^60: the laws' precondition where a product must stay finite.
 const TWO_TO_60: f32 = 1.152_921_5e18;
@@ -127,22 +117,6 @@ fn any_with_exponent_in(lo: i32, hi: i32) -> f32 {
     let span = u32::try_from(hi - lo + 1).unwrap_or(1);
     let biased = u32::try_from(lo + 127).unwrap_or(0) + kani::any::<u32>() % span;
     f32::from_bits(sign_and_mantissa | (biased << 23))
-}
-
-/// Random test, not a proof target: eight unconstrained components, 32
-/// symbolic products and the f64 norms at once. The three harnesses after
-/// it are the law's proof targets.
-#[cfg(all(test, not(kani)))]
-#[test]
-fn quat_product_multiplies_norms() {
-    check("quat_product_multiplies_norms", || {
-        // Solver bound: components within 2^20 (the law allows 2^40).
-        let (a, b) = (any_quat_within(MILLION), any_quat_within(MILLION));
-        // Precondition: squared norms in [2^-40, 2^40] (no underflow).
-        let n = |q: Quat| f64::from(q.norm_squared());
-        kani::assume((9.1e-13..=1.1e12).contains(&n(a)) && (9.1e-13..=1.1e12).contains(&n(b)));
-        assert_holds(laws::product_norm_is_multiplicative(a, b));
-    });
 }
 
 /// `|a b| = |a| |b|` with one symbolic component in each factor, its
@@ -183,22 +157,6 @@ fn quat_product_multiplies_norms_moderate() {
 #[cfg_attr(not(kani), test)]
 fn quat_product_multiplies_norms_large() {
     product_norm_with_exponents_in("quat_product_multiplies_norms_large", 10, 29);
-}
-
-/// Random test, not a proof target as written: four unconstrained
-/// components normalized (four symbolic divisions) and a symbolic vector
-/// rotated through 18 products.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn quat_rotation_preserves_length() {
-    check("quat_rotation_preserves_length", || {
-        let q = any_unit_quat();
-        // Solver bound: components within 2^20 (the law allows 2^40).
-        let v = any_vec_within(MILLION);
-        assert_holds(laws::rotation_preserves_length(q, v));
-    });
 }
 
 /// Random test, not a proof target: four unconstrained components, four
@@ -276,42 +234,6 @@ fn normalize_is_unit_scaled_down() {
     normalize_with_exponents_in("normalize_is_unit_scaled_down", 63, 127);
 }
 
-/// The norm of `pow` on every finite input: zero, subnormal and huge vector
-/// parts, `w = +-1`, `w = 0`, non-unit inputs, any finite `alpha`. With
-/// atan2, sine and cosine stubbed by contracts that ignore their argument's
-/// value, this covers no atan2 edge case and says nothing about the angle:
-/// only that any kernels meeting the contracts give a unit result. The
-/// angle is `pow_turns_as_the_notes_define`'s (stand-in and fuzz target).
-///
-/// Random test, not a proof target as written: four unconstrained
-/// components, the scaled sum of squares, divisions and the stubbed
-/// kernels' contracts (f64 polynomials of symbolic outputs) at once.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))] // scaled sums of squares over four components
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::atan2, crate::stubs::atan2))]
-#[cfg_attr(
-    kani,
-    kani::stub(rigtform::kani_kernels::sin_cos, crate::stubs::sin_cos)
-)]
-#[cfg_attr(not(kani), test)]
-fn pow_is_unit_for_every_finite_input() {
-    check("pow_is_unit_for_every_finite_input", || {
-        // Preconditions: finite quaternion and exponent. No solver bound.
-        // A choice Kani explores both ways anyway; for the stand-in, half
-        // the draws are pure real, whose path random bits almost never take.
-        let q = if kani::any() {
-            any_finite_quat()
-        } else {
-            Quat::from_wxyz(any_finite(), 0.0, 0.0, 0.0)
-        };
-        let alpha = any_finite();
-        kani::cover!(q.x == 0.0 && q.y == 0.0 && q.z == 0.0, "pure real");
-        kani::cover!(alpha.abs() > f32::MAX / 4.0, "fourth power");
-        assert_holds(laws::pow_is_unit(q, alpha));
-    });
-}
-
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::atan2, crate::stubs::atan2))]
@@ -344,41 +266,6 @@ fn slerp_of_non_finite_input_is_nan() {
     });
 }
 
-/// Identical, nearly identical, antipodal and opposite pairs are all among
-/// the inputs. The real sine and atan2 kernels: the norm depends on their
-/// accuracy.
-///
-/// Random test, not a proof target as written: two normalized symbolic
-/// quaternions, the real atan2 and sine polynomials and, beyond 3 pi/4, a
-/// branching reduction in integers.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn slerp_is_unit_for_every_finite_alpha() {
-    check("slerp_is_unit_for_every_finite_alpha", || {
-        // Preconditions: unit inputs, finite alpha. No solver bound.
-        let a = any_unit_quat();
-        // Half the pairs within 2^-11 rad of each other (a turned about
-        // x), so that the small-angle branch is reached.
-        let b = if kani::any() {
-            any_unit_quat()
-        } else {
-            (a * Quat::from_rotation_x(any_within(4.9e-4))).normalize()
-        };
-        let alpha = any_finite();
-        let in_plane = (0.0..=1.0).contains(&alpha) && alpha != 0.0;
-        // slerp's phi is half the rotation angle: below 2^-12, the
-        // small-angle branch (at 0, the early return).
-        let angle = a.angle_to(b);
-        let close = angle > 0.0 && angle < 4.8e-4;
-        kani::cover!(in_plane && !close, "in plane");
-        kani::cover!(in_plane && close, "small angle");
-        kani::cover!(!(0.0..=1.0).contains(&alpha), "extrapolating");
-        assert_holds(laws::slerp_is_unit(a, b, alpha));
-    });
-}
-
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -388,46 +275,6 @@ fn slerp_is_exact_at_zero() {
         // Precondition: components within 2^60, so that b a^-1 is finite.
         let (a, b) = (any_quat_within(TWO_TO_60), any_quat_within(TWO_TO_60));
         assert_holds(laws::slerp_is_exact_at_zero(a, b));
-    });
-}
-
-/// The short way: `b` and `-b` give one path. Heavy for a solver (two
-/// slerps of symbolic unit inputs, real atan2 and sines); its point is
-/// `cn`, which is exact sign arithmetic.
-///
-/// Random test, not a proof target as written: two slerps of two normalized
-/// symbolic quaternions with the real kernels.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn slerp_takes_the_short_way() {
-    check("slerp_takes_the_short_way", || {
-        // Preconditions: unit inputs, finite alpha.
-        let (a, b) = (any_unit_quat(), any_unit_quat());
-        let alpha = any_finite();
-        kani::cover!(a.dot(b) < 0.0, "b on the far side");
-        assert_holds(laws::slerp_takes_the_short_way(a, b, alpha));
-    });
-}
-
-/// Constant angular velocity: the turn from `a` is `alpha` times the angle
-/// to `b`. Heavy for a solver (three angles through atan2 and square
-/// roots of symbolic unit inputs): a stand-in test until it is split.
-///
-/// Random test, not a proof target as written: three angles through the
-/// real atan2 and stubbed square roots of two normalized symbolic
-/// quaternions.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn slerp_turns_by_alpha_times_the_angle() {
-    check("slerp_turns_by_alpha_times_the_angle", || {
-        // Preconditions: unit inputs, alpha in [0, 1].
-        let (a, b) = (any_unit_quat(), any_unit_quat());
-        let alpha = kani::any_where(|t: &f32| (0.0..=1.0).contains(t));
-        assert_holds(laws::slerp_turns_by_alpha_times_the_angle(a, b, alpha));
     });
 }
 
@@ -447,41 +294,6 @@ fn pow_turns_as_the_notes_define() {
     });
 }
 
-/// Random test, not a proof target as written: two normalized symbolic
-/// quaternions, their weighted sum and a third normalization.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn nlerp_is_unit() {
-    check("nlerp_is_unit", || {
-        // Preconditions: unit inputs, alpha in [0, 1].
-        let (a, b) = (any_unit_quat(), any_unit_quat());
-        let alpha = kani::any_where(|t: &f32| (0.0..=1.0).contains(t));
-        assert_holds(laws::nlerp_is_unit(a, b, alpha));
-    });
-}
-
-/// Random test, not a proof target as written: three normalized symbolic
-/// quaternions, three symbolic weights and a normalization of their sum.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))] // three entries, and normalize's four components
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn blend_of_three_is_unit_or_identity() {
-    check("blend_of_three_is_unit_or_identity", || {
-        // Preconditions: unit quaternions, finite weights within 2^60;
-        // solver bound: three entries, weights within 2^20.
-        let entries = [
-            (any_unit_quat(), any_within(MILLION)),
-            (any_unit_quat(), any_within(MILLION)),
-            (any_unit_quat(), any_within(MILLION)),
-        ];
-        kani::cover!(Quat::blend(&entries) == Quat::IDENTITY, "identity");
-        assert_holds(laws::blend_is_unit_or_identity(&entries));
-    });
-}
-
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(not(kani), test)]
 fn quat_inverse_is_an_involution() {
@@ -489,19 +301,6 @@ fn quat_inverse_is_an_involution() {
         // No assumption: every bit pattern, NaN payloads included.
         let q = any_quat_bits();
         assert_holds(laws::inverse_is_an_involution(q));
-    });
-}
-
-/// Random test, not a proof target: four unconstrained components within
-/// 2^60 and their 16 products at once. The three harnesses after it are
-/// the law's proof targets.
-#[cfg(all(test, not(kani)))]
-#[test]
-fn quat_times_inverse_is_real() {
-    check("quat_times_inverse_is_real", || {
-        // Precondition: components within 2^60 (no overflow).
-        let q = any_quat_within(TWO_TO_60);
-        assert_holds(laws::product_with_inverse_is_real(q));
     });
 }
 
@@ -580,66 +379,6 @@ fn catmull_rom_is_the_key_at_and_beyond_each_key() {
     });
 }
 
-/// A rigid body transform with a unit rotation and a translation within
-/// 2^20 (solver bound; the laws allow 2^40 or 2^20).
-fn any_rig_tform() -> RigTForm {
-    RigTForm::new(any_vec_within(MILLION), any_unit_quat())
-}
-
-/// Random test, not a proof target as written: a normalized symbolic
-/// rotation and a symbolic translation rotated twice.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn rigtform_times_inverse_is_identity() {
-    check("rigtform_times_inverse_is_identity", || {
-        assert_holds(laws::rigid_product_with_inverse_is_identity(any_rig_tform()));
-    });
-}
-
-/// Random test, not a proof target as written: a normalized symbolic
-/// rotation and a symbolic translation rotated twice.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn rigtform_inverse_is_an_involution() {
-    check("rigtform_inverse_is_an_involution", || {
-        assert_holds(laws::rigid_inverse_is_an_involution(any_rig_tform()));
-    });
-}
-
-/// Random test, not a proof target as written: a normalized symbolic
-/// rotation, its matrix and the general matrix inverse (cofactors and a
-/// division).
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(17))] // the law compares 16 matrix entries
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn rigtform_inverse_agrees_with_matrix_inverse() {
-    check("rigtform_inverse_agrees_with_matrix_inverse", || {
-        assert_holds(laws::rigid_inverse_matches_matrix_inverse(any_rig_tform()));
-    });
-}
-
-/// Random test, not a proof target as written: a normalized symbolic
-/// rotation, its matrix and a symbolic vector moved both ways.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))]
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn rigtform_matrix_moves_points_as_the_transform() {
-    check("rigtform_matrix_moves_points_as_the_transform", || {
-        let a = any_rig_tform();
-        // Precondition: w is 0 (a vector) or 1 (a point).
-        let w = if kani::any::<bool>() { 1.0 } else { 0.0 };
-        let v = any_vec_within(MILLION);
-        let c = Cvec4::new(v.x, v.y, v.z, w);
-        assert_holds(laws::rigid_matrix_moves_points_as_the_transform(a, c));
-    });
-}
-
 #[cfg_attr(kani, kani::proof)]
 #[cfg_attr(kani, kani::unwind(5))]
 #[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
@@ -663,112 +402,6 @@ fn matrix_inverse_is_none_or_finite() {
         kani::cover!(m.inverse().is_some(), "Some");
         kani::cover!(m.inverse().is_none(), "None");
         assert_holds(laws::matrix_inverse_is_none_or_finite(m));
-    });
-}
-
-/// Any of the 24 orders of Euler angles.
-fn any_euler_order() -> EulerRot {
-    let i = kani::any::<u32>() % EulerRot::ALL.len() as u32;
-    EulerRot::ALL[i as usize]
-}
-
-/// Random test, not a proof target as written: a normalized symbolic
-/// quaternion, two `hypotf`s and three atan2 polynomials one way, and the
-/// sines and cosines of three symbolic angles back.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))] // the scaled sum of squares over four components
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn euler_angles_give_back_the_rotation() {
-    check("euler_angles_give_back_the_rotation", || {
-        let order = any_euler_order();
-        // Precondition: unit. Half the draws at gimbal lock (b = +-pi/2,
-        // any a and c), which random unit quaternions all but never meet.
-        let q = if kani::any() {
-            any_unit_quat()
-        } else {
-            let lock = if kani::any() { FRAC_PI_2 } else { -FRAC_PI_2 };
-            Quat::from_euler(order, any_within(PI), lock, any_within(PI))
-        };
-        let (_, b, c) = q.to_euler(order);
-        // At the lock to_euler puts the whole turn in a and returns c = 0.
-        kani::cover!(b.abs() == FRAC_PI_2 && c == 0.0, "gimbal lock");
-        kani::cover!(b.abs() < 1.5, "away from the lock");
-        kani::cover!(q.w < 0.0, "w < 0 (cn first)");
-        assert_holds(laws::euler_angles_give_back_the_rotation(q, order));
-    });
-}
-
-/// Random test, not a proof target as written: a normalized symbolic
-/// quaternion, its matrix (products of symbolic components) and Shepperd's
-/// four-way branch and normalization back.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))] // normalize maps over four components
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn from_matrix_inverts_from_quat() {
-    check("from_matrix_inverts_from_quat", || {
-        // Precondition: unit. Half the draws are half turns (w = 0), whose
-        // trace is -1, so that x, y or z is the largest of Shepperd's four.
-        let q = if kani::any() {
-            any_unit_quat()
-        } else {
-            let v = any_vec_within(MILLION);
-            // Precondition of normalize_is_unit: not zero.
-            kani::assume(v != Cvec3::ZERO);
-            Quat::from_wxyz(0.0, v.x, v.y, v.z).normalize()
-        };
-        // The branch from_matrix takes: the largest of four times the
-        // squares of w, x, y and z, read from the matrix as it reads them.
-        let m = Matrix4::from_quat(q).to_cols_array();
-        let (m00, m11, m22) = (m[0], m[5], m[10]);
-        let w4 = 1.0 + m00 + m11 + m22;
-        let x4 = 1.0 + m00 - m11 - m22;
-        let y4 = 1.0 - m00 + m11 - m22;
-        let z4 = 1.0 - m00 - m11 + m22;
-        let w_branch = w4 >= x4 && w4 >= y4 && w4 >= z4;
-        let x_branch = !w_branch && x4 >= y4 && x4 >= z4;
-        let y_branch = !w_branch && !x_branch && y4 >= z4;
-        let z_branch = !w_branch && !x_branch && !y_branch;
-        kani::cover!(w_branch, "w largest");
-        kani::cover!(x_branch && q.w == 0.0, "x largest, half turn");
-        kani::cover!(y_branch && q.w == 0.0, "y largest, half turn");
-        kani::cover!(z_branch && q.w == 0.0, "z largest, half turn");
-        assert_holds(laws::from_matrix_inverts_from_quat(q));
-    });
-}
-
-/// Random test, not a proof target as written: two symbolic directions
-/// normalized (six symbolic divisions), their cross product, and a
-/// normalization or a perpendicular built by another cross product.
-#[cfg_attr(kani, kani::proof)]
-#[cfg_attr(kani, kani::unwind(5))] // normalize maps over the components
-#[cfg_attr(kani, kani::stub(rigtform::kani_kernels::sqrt, crate::stubs::sqrt))]
-#[cfg_attr(not(kani), test)]
-fn rotation_arc_takes_from_to_to() {
-    check("rotation_arc_takes_from_to_to", || {
-        // Solver bound: components within 2^20 (the law allows squared
-        // lengths up to 2^80).
-        let from = any_vec_within(MILLION);
-        // A third of the draws exactly opposite (-2 from, an exact
-        // scaling: the cross product of the two is exactly zero and the
-        // unit directions are negatives of each other to rounding, the
-        // branch of a half turn about a perpendicular axis), a third
-        // nearly opposite (one component nudged), which random directions
-        // all but never are.
-        let to = match kani::any::<u32>() % 3 {
-            0 => any_vec_within(MILLION),
-            1 => from * -2.0,
-            _ => from * -2.0 + Cvec3::new(any_within(1e-3), 0.0, 0.0),
-        };
-        // Precondition: squared lengths in [2^-40, 2^80].
-        let moderate = |v: Cvec3| (9.094_947e-13..=1.208_925_8e24).contains(&v.norm_squared());
-        kani::assume(moderate(from) && moderate(to));
-        let dot = from.dot(to);
-        kani::cover!(from.cross(to) == Cvec3::ZERO && dot < 0.0, "opposite");
-        kani::cover!(from.cross(to) != Cvec3::ZERO && dot < 0.0, "far side");
-        kani::cover!(dot >= 0.0, "near side");
-        assert_holds(laws::rotation_arc_takes_from_to_to(from, to));
     });
 }
 

@@ -15,6 +15,8 @@
 //! seeded generator the stand-in and the on-target tests share, [`reference`](mod@reference)
 //! the notes' formulas in `f64` for the on-target accuracy checks.
 //! [`contracts`] states what the stubbed float kernels promise.
+//! [`firmware_step`] is the example of a firmware's own Kani harness over
+//! the library, with its operations stubbed by their contracts.
 //!
 //! Nothing here is proven unless `cargo kani` ran it: Kani is not
 //! installable on the machines this crate is developed on.
@@ -28,6 +30,7 @@
 pub mod contracts;
 pub mod draw;
 pub mod edge;
+pub mod firmware_step;
 pub mod fuzz_laws;
 pub mod laws;
 pub mod reference;

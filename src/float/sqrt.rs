@@ -17,14 +17,19 @@
 ///   libm's `sqrtf` is the same instruction there, but in inline assembly,
 ///   which a loop vectorizer cannot look into.
 /// - Elsewhere it is libm's `sqrtf`.
+/// - Under Kani (`cfg(kani)`), which reads none of these, it is the one
+///   f32 that the correctly rounded square root is, described instead of
+///   computed (`float/sqrt_kani.rs`).
 #[inline]
 #[must_use]
 pub fn sqrt(x: f32) -> f32 {
+    #[cfg(kani)]
+    return super::sqrt_kani::sqrt(x);
     #[cfg(arm_fpu_sqrt)]
     return fpu_sqrt(x);
     #[cfg(vector_unit_sqrt)]
     return vector_unit_sqrt(x);
-    #[cfg(not(any(arm_fpu_sqrt, vector_unit_sqrt)))]
+    #[cfg(not(any(arm_fpu_sqrt, vector_unit_sqrt, kani)))]
     return libm::sqrtf(x);
 }
 

@@ -277,6 +277,7 @@ impl Quat {
     /// assert!((q * q.inv()).angle_to(Quat::IDENTITY) < 1e-6);
     /// assert_eq!(q.inv().inv(), q);
     /// ```
+    #[cfg_attr(kani, kani::ensures(|r: &Quat| crate::kani_contracts::is_conjugate(self, *r)))]
     #[inline]
     #[must_use]
     pub fn inv(self) -> Self {
@@ -360,6 +361,8 @@ impl Quat {
     /// let q = Quat::from_wxyz(1e-40, 0.0, 1e-40, 0.0).normalize(); // subnormal input
     /// assert!((q.norm() - 1.0).abs() < 1e-6);
     /// ```
+    #[cfg_attr(kani, kani::requires(crate::kani_contracts::normalize_requires(self)))]
+    #[cfg_attr(kani, kani::ensures(|r: &Quat| crate::kani_contracts::normalize_ensures(self, *r)))]
     #[inline]
     #[must_use]
     pub fn normalize(self) -> Self {

@@ -118,6 +118,11 @@ impl Quat {
     // costs as much as a share of the work; one out-of-line copy elsewhere
     // (flash on a Cortex-M4F).
     #[cfg_attr(desktop64, inline)]
+    #[cfg_attr(
+        kani,
+        kani::requires(crate::kani_contracts::slerp_requires(self, other, alpha))
+    )]
+    #[cfg_attr(kani, kani::ensures(|r: &Quat| crate::kani_contracts::slerp_ensures(self, alpha, *r)))]
     #[must_use]
     pub fn slerp(self, other: Self, alpha: f32) -> Self {
         #[cfg(desktop64)]

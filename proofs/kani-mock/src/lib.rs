@@ -1,7 +1,9 @@
-//! A mock of the parts of Kani that `rigtform-proofs` uses, for compiling
-//! the harnesses under `cfg(kani)` where Kani is not installed (`.ci/run`'s
-//! `kani_mock` stage):
-//! `RUSTFLAGS="--cfg kani --cfg rigtform_kani_mock" cargo check -p rigtform-proofs`.
+//! A mock of the parts of Kani that `rigtform` and `rigtform-proofs` use,
+//! for compiling the library's contracts and `Arbitrary` implementations
+//! and the harnesses under `cfg(kani)` where Kani is not installed
+//! (`.ci/run`'s `kani_mock` stage). As `cargo kani` does, the stage hands
+//! the crate to every compiled crate: built first, then
+//! `RUSTFLAGS="--cfg kani --extern kani=<its rlib> -L dependency=<its deps>"`.
 //!
 //! It checks what a compile can check and `cargo kani` would otherwise be
 //! the first to see: that every path a `#[kani::stub]` names exists and
@@ -9,7 +11,11 @@
 //! re-typed kernel fails here), that `#[kani::proof]` marks a function
 //! without parameters, that `#[kani::unwind]` has one integer and
 //! `#[kani::solver]` a solver Kani knows, and that the harnesses call
-//! `any`, `any_where`, `assume` and `cover!` with the types Kani's have.
+//! `any`, `any_where`, `assume` and `cover!` with the types Kani's have;
+//! and of function contracts: that every `requires` is a `bool` and every
+//! `ensures` a closure from a reference to the function's result to
+//! `bool`, over the function's parameters, and that every path
+//! `proof_for_contract` and `stub_verified` name exists.
 //!
 //! Nothing here runs: the functions are for type checking, and panic if
 //! called (the harnesses run as tests through `src/kani_stand_in.rs`, and
@@ -18,14 +24,41 @@
 #![no_std]
 #![deny(missing_docs)]
 
-pub use rigtform_kani_mock_macros::{proof, solver, stub, unwind};
+pub use rigtform_kani_mock_macros::{
+    ensures, proof, proof_for_contract, requires, solver, stub, stub_verified, unwind,
+};
 
-/// The types `any` can produce, as in Kani.
-pub trait Arbitrary {}
+/// The types `any` can produce, as in Kani: `any()` gives any value of
+/// the type.
+pub trait Arbitrary: Sized {
+    /// Any value of the type: type checking only.
+    ///
+    /// # Panics
+    ///
+    /// Always: a mock is compiled, never run.
+    fn any() -> Self;
+}
 
-impl Arbitrary for bool {}
-impl Arbitrary for f32 {}
-impl Arbitrary for u32 {}
+/// The panic of every function of the mock.
+fn never_run() -> ! {
+    panic!("the Kani mock is for compiling harnesses; run them with cargo kani or cargo test")
+}
+
+impl Arbitrary for bool {
+    fn any() -> Self {
+        never_run()
+    }
+}
+impl Arbitrary for f32 {
+    fn any() -> Self {
+        never_run()
+    }
+}
+impl Arbitrary for u32 {
+    fn any() -> Self {
+        never_run()
+    }
+}
 
 /// Kani's `any`: type checking only.
 ///
@@ -33,7 +66,7 @@ impl Arbitrary for u32 {}
 ///
 /// Always: a mock is compiled, never run.
 pub fn any<T: Arbitrary>() -> T {
-    panic!("the Kani mock is for compiling harnesses; run them with cargo kani or cargo test")
+    T::any()
 }
 
 /// Kani's `any_where`: type checking only.

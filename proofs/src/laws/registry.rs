@@ -35,8 +35,9 @@ pub struct Law {
 /// Whether a law has a Kani harness.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Harness {
-    /// The harness function's name in `src/harnesses.rs`.
-    Proof(&'static str),
+    /// The names of the harness functions in `src/harnesses.rs` (a law
+    /// split for the solver, one harness per exponent range, has several).
+    Proof(&'static [&'static str]),
     /// Why the law has no harness.
     None(&'static str),
 }
@@ -163,17 +164,17 @@ use Harness::{None as NoHarness, Proof};
 pub const LAWS: &[Law] = &[
     law!(
         "product_norm_is_multiplicative",
-        Proof("quat_product_multiplies_norms"),
+        Proof(&["quat_product_multiplies_norms_small", "quat_product_multiplies_norms_moderate", "quat_product_multiplies_norms_large"]),
         |d| { laws::product_norm_is_multiplicative(d.unit_quat(), d.unit_quat()) }
     ),
     law!(
         "rotation_preserves_length",
-        Proof("quat_rotation_preserves_length"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| { laws::rotation_preserves_length(d.unit_quat(), d.vec3(1e3)) }
     ),
     law!(
         "normalize_is_unit (edge grid)",
-        Proof("normalize_is_unit_from_subnormal_to_max"),
+        Proof(&["normalize_is_unit_from_subnormal_to_max", "normalize_is_unit_scaled_up", "normalize_is_unit_unscaled", "normalize_is_unit_scaled_down"]),
         |d| {
             // Zero has no direction; one of subnormals only stands in for it.
             let q = finite_edge_quat(d);
@@ -187,22 +188,22 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "pow_is_unit (edge grid, edge alphas)",
-        Proof("pow_is_unit_for_every_finite_input"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| { laws::pow_is_unit(finite_edge_quat(d), edge_alpha(d)) }
     ),
     law!(
         "pow_is_unit (random, any finite alpha)",
-        Proof("pow_is_unit_for_every_finite_input"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| { laws::pow_is_unit(d.unit_quat(), finite(d)) }
     ),
     law!(
         "pow_turns_as_the_notes_define",
-        Proof("pow_turns_as_the_notes_define"),
+        Proof(&["pow_turns_as_the_notes_define"]),
         |d| { laws::pow_turns_as_the_notes_define(d.unit_quat(), d.uniform(-4.0, 4.0)) }
     ),
     law!(
         "pow_of_non_finite_is_nan",
-        Proof("pow_of_non_finite_input_is_nan"),
+        Proof(&["pow_of_non_finite_input_is_nan"]),
         |d| {
             let q = edge_quat(d);
             if q.is_finite() {
@@ -214,7 +215,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_is_unit (pairs, edge alphas)",
-        Proof("slerp_is_unit_for_every_finite_alpha"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| {
             let (a, b) = pair(d);
             laws::slerp_is_unit(a, b, edge_alpha(d))
@@ -222,7 +223,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_is_unit (pairs, alpha in [-2, 3])",
-        Proof("slerp_is_unit_for_every_finite_alpha"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| {
             let (a, b) = pair(d);
             laws::slerp_is_unit(a, b, d.uniform(-2.0, 3.0))
@@ -230,7 +231,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_is_unit (pairs, any finite alpha)",
-        Proof("slerp_is_unit_for_every_finite_alpha"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| {
             let (a, b) = pair(d);
             laws::slerp_is_unit(a, b, finite(d))
@@ -238,7 +239,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_of_non_finite_is_nan",
-        Proof("slerp_of_non_finite_input_is_nan"),
+        Proof(&["slerp_of_non_finite_input_is_nan"]),
         |d| {
             let (a, b) = pair(d);
             let bad = edge_quat(d);
@@ -255,7 +256,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_is_exact_at_zero",
-        Proof("slerp_is_exact_at_zero"),
+        Proof(&["slerp_is_exact_at_zero"]),
         |d| {
             let (a, b) = pair(d);
             laws::slerp_is_exact_at_zero(a, b)
@@ -263,7 +264,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_turns_by_alpha_times_the_angle",
-        Proof("slerp_turns_by_alpha_times_the_angle"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| {
             let (a, b) = pair(d);
             laws::slerp_turns_by_alpha_times_the_angle(a, b, d.uniform(0.0, 1.0))
@@ -279,7 +280,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_takes_the_short_way",
-        Proof("slerp_takes_the_short_way"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| {
             let (a, b) = pair(d);
             laws::slerp_takes_the_short_way(a, b, d.uniform(-2.0, 3.0))
@@ -293,13 +294,13 @@ pub const LAWS: &[Law] = &[
             laws::slerp_reaches_the_rotation_of_b_at_one(a, b)
         }
     ),
-    law!("nlerp_is_unit", Proof("nlerp_is_unit"), |d| {
+    law!("nlerp_is_unit", NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"), |d| {
         let (a, b) = pair(d);
         laws::nlerp_is_unit(a, b, d.uniform(0.0, 1.0))
     }),
     law!(
         "blend_is_unit_or_identity",
-        Proof("blend_of_three_is_unit_or_identity"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| {
             let (a, b, c) = (d.unit_quat(), d.unit_quat(), d.unit_quat());
             let w = [
@@ -312,37 +313,37 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "inverse_is_an_involution (edge grid)",
-        Proof("quat_inverse_is_an_involution"),
+        Proof(&["quat_inverse_is_an_involution"]),
         |d| { laws::inverse_is_an_involution(edge_quat(d)) }
     ),
     law!(
         "product_with_inverse_is_real",
-        Proof("quat_times_inverse_is_real"),
+        Proof(&["quat_times_inverse_is_real_small", "quat_times_inverse_is_real_moderate", "quat_times_inverse_is_real_large"]),
         |d| { laws::product_with_inverse_is_real(d.unit_quat()) }
     ),
     law!(
         "cn_gives_non_negative_w_and_the_same_rotation (edge grid)",
-        Proof("cn_gives_non_negative_w_and_the_same_rotation"),
+        Proof(&["cn_gives_non_negative_w_and_the_same_rotation"]),
         |d| { laws::cn_gives_non_negative_w_and_the_same_rotation(edge_quat(d)) }
     ),
     law!(
         "rigid_product_with_inverse_is_identity",
-        Proof("rigtform_times_inverse_is_identity"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| { laws::rigid_product_with_inverse_is_identity(rig_tform(d)) }
     ),
     law!(
         "rigid_inverse_is_an_involution",
-        Proof("rigtform_inverse_is_an_involution"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| { laws::rigid_inverse_is_an_involution(rig_tform(d)) }
     ),
     law!(
         "rigid_inverse_matches_matrix_inverse",
-        Proof("rigtform_inverse_agrees_with_matrix_inverse"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| { laws::rigid_inverse_matches_matrix_inverse(rig_tform(d)) }
     ),
     law!(
         "rigid_matrix_moves_points_as_the_transform",
-        Proof("rigtform_matrix_moves_points_as_the_transform"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| {
             let (a, p) = (rig_tform(d), d.vec3(100.0));
             laws::rigid_matrix_moves_points_as_the_transform(a, Cvec4::from_point(p))?;
@@ -351,7 +352,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "interpolate_is_exact_at_zero",
-        Proof("rigtform_interpolate_is_exact_at_zero"),
+        Proof(&["rigtform_interpolate_is_exact_at_zero"]),
         |d| { laws::interpolate_is_exact_at_zero(rig_tform(d), rig_tform(d)) }
     ),
     law!(
@@ -377,7 +378,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "matrix_inverse_is_none_or_finite (mixed bits, edge scales)",
-        Proof("matrix_inverse_is_none_or_finite"),
+        Proof(&["matrix_inverse_is_none_or_finite"]),
         |d| {
             let m: [f32; 16] = core::array::from_fn(|_| d.f32_mixed());
             laws::matrix_inverse_is_none_or_finite(Matrix4::from_cols_array(&m))?;
@@ -390,7 +391,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "euler_angles_give_back_the_rotation",
-        Proof("euler_angles_give_back_the_rotation"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| {
             let order = EulerRot::ALL
                 .get(d.below(EulerRot::ALL.len()))
@@ -401,7 +402,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "euler_angles_give_back_the_rotation (gimbal lock)",
-        Proof("euler_angles_give_back_the_rotation"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| {
             let order = EulerRot::ALL
                 .get(d.below(EulerRot::ALL.len()))
@@ -415,12 +416,12 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "from_matrix_inverts_from_quat",
-        Proof("from_matrix_inverts_from_quat"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| { laws::from_matrix_inverts_from_quat(d.unit_quat()) }
     ),
     law!(
         "rotation_arc_takes_from_to_to",
-        Proof("rotation_arc_takes_from_to_to"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| {
             let (from, to) = (d.vec3(10.0), d.vec3(10.0));
             if from.norm_squared() < 1e-6 || to.norm_squared() < 1e-6 {
@@ -431,7 +432,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "rotation_arc_takes_from_to_to (nearly the same or opposite)",
-        Proof("rotation_arc_takes_from_to_to"),
+        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
         |d| {
             let from = d.vec3(10.0);
             if from.norm_squared() < 1e-6 {
@@ -443,7 +444,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "catmull_rom_is_the_key_at_and_beyond_each_key (edge keys)",
-        Proof("catmull_rom_is_the_key_at_and_beyond_each_key"),
+        Proof(&["catmull_rom_is_the_key_at_and_beyond_each_key"]),
         |d| {
             let keys = [d.unit_quat(), edge_quat(d), d.unit_quat()];
             for t in [
@@ -517,7 +518,7 @@ pub const LAWS: &[Law] = &[
     }),
     law!(
         "step_sampler_is_constant_between_keys",
-        Proof("step_sampler_copies_its_keys"),
+        Proof(&["step_sampler_copies_its_keys"]),
         |d| {
             let (times, r, _) = sampler_keys(d);
             laws::step_sampler_is_constant_between_keys(&times, &r, d.uniform(0.0, 7.0))
@@ -552,16 +553,32 @@ mod tests {
         }
     }
 
-    /// Every harness the registry names is a function of `src/harnesses.rs`.
+    /// Every harness the registry names is a function of `src/harnesses.rs`,
+    /// and every harness there is named by an entry.
     #[test]
     fn the_harnesses_named_exist() {
         let harnesses = include_str!("../harnesses.rs");
+        let mut named = std::vec::Vec::new();
         for law in LAWS.iter() {
-            if let Harness::Proof(name) = law.harness {
+            if let Harness::Proof(names) = law.harness {
+                for name in names {
+                    named.push(*name);
+                    assert!(
+                        harnesses.contains(&std::format!("fn {name}()")),
+                        "{}: no harness {name}",
+                        law.name
+                    );
+                }
+            }
+        }
+        let mut lines = harnesses.lines().peekable();
+        while let Some(line) = lines.next() {
+            if line.contains("#[cfg_attr(not(kani), test)]") {
+                let body = lines.find(|l| l.starts_with("fn ")).unwrap_or_default();
+                let name = body[3..].split('(').next().unwrap_or_default();
                 assert!(
-                    harnesses.contains(&std::format!("fn {name}()")),
-                    "{}: no harness {name}",
-                    law.name
+                    named.contains(&name),
+                    "the harness {name} proves no registered law"
                 );
             }
         }

@@ -1,0 +1,258 @@
+//! The contracts on the library's core operations (`kani::requires` and
+//! `kani::ensures` under `cfg(kani)`, their conditions in the library's
+//! `src/features/impl_kani.rs`, shown here as `rigtform::kani_contracts`
+//! by the `kernel-contracts` feature of this crate's dev-dependency),
+//! checked on edge and random inputs: wherever an operation's `requires`
+//! holds, its `ensures` holds of the result. Kani checks the same on every
+//! input (`cargo kani -p rigtform -Z function-contracts`), where it is
+//! installed; this is testing, on the draws counted below, not proof.
+//!
+//! Also: that the bounds the contracts state are no tighter than the ones
+//! the Gappa models prove (read from each model's `#!` line), and that
+//! every `ensures` rejects results the operation must not give (a contract
+//! that accepted anything would make `stub_verified` vacuous).
+
+use rigtform::kani_contracts as c;
+use rigtform::{Cvec3, Quat, RigTForm};
+use rigtform_proofs::draw::Draws;
+use rigtform_proofs::edge::{edge_quats, EDGE_F32};
+
+/// Random draws per operation.
+const DRAWS: usize = 200_000;
+
+/// A quaternion with components in [-1, 1], unit or not: uniform,
+/// unit, and edge components.
+fn quat_in_box(d: &mut Draws) -> Quat {
+    match d.below(3) {
+        0 => d.unit_quat(),
+        1 => Quat::from_xyzw(
+            d.uniform(-1.0, 1.0),
+            d.uniform(-1.0, 1.0),
+            d.uniform(-1.0, 1.0),
+            d.uniform(-1.0, 1.0),
+        ),
+        _ => {
+            let mut edge = || {
+                let x = EDGE_F32[d.below(EDGE_F32.len())];
+                if x.abs() <= 1.0 {
+                    x
+                } else {
+                    d.uniform(-1.0, 1.0)
+                }
+            };
+            Quat::from_xyzw(edge(), edge(), edge(), edge())
+        }
+    }
+}
+
+/// A vector with components up to `VEC_BOUND`, from tiny to the bound.
+fn bounded_vec(d: &mut Draws) -> Cvec3 {
+    let scale = [1e-30, 1e-3, 1.0, 1e3, 1e15, c::VEC_BOUND][d.below(6)];
+    d.vec3(1.0) * scale
+}
+
+#[test]
+fn the_core_operations_meet_their_contracts_on_edge_and_random_inputs() {
+    let mut d = Draws::new(2405);
+    let mut counts = [0usize; 6];
+    // Edge quaternions: normalize and inv on every one, the product with a
+    // random unit quaternion on those in the box.
+    for q in edge_quats() {
+        assert!(c::is_conjugate(q, q.inv()), "inv {q:?}");
+        if c::normalize_requires(q) {
+            assert!(
+                c::normalize_ensures(q, q.normalize()),
+                "normalize {q:?}: {:?}",
+                q.normalize()
+            );
+            counts[0] += 1;
+        }
+        let u = d.unit_quat();
+        if c::quat_mul_requires(q, u) {
+            assert!(c::quat_mul_ensures(q, u, q * u), "{q:?} * {u:?}");
+            assert!(c::quat_mul_ensures(u, q, u * q), "{u:?} * {q:?}");
+            counts[1] += 1;
+        }
+    }
+    for _ in 0..DRAWS {
+        let (a, b) = (quat_in_box(&mut d), quat_in_box(&mut d));
+        assert!(c::quat_mul_requires(a, b));
+        assert!(
+            c::quat_mul_ensures(a, b, a * b),
+            "{a:?} * {b:?} = {:?}",
+            a * b
+        );
+        counts[1] += 1;
+
+        let q = Quat::from_xyzw(d.f32_mixed(), d.f32_mixed(), d.f32_mixed(), d.f32_mixed());
+        if c::normalize_requires(q) {
+            assert!(
+                c::normalize_ensures(q, q.normalize()),
+                "normalize {q:?}: {:?}",
+                q.normalize()
+            );
+            counts[0] += 1;
+        }
+
+        let v = bounded_vec(&mut d);
+        assert!(c::rotate_requires(a, v));
+        assert!(
+            c::rotate_ensures(a, v, a * v),
+            "{a:?} * {v:?} = {:?}",
+            a * v
+        );
+        let w = d.vec3(1.0);
+        assert!(
+            c::rotate_ensures(a, w, a * w),
+            "{a:?} * {w:?} = {:?}",
+            a * w
+        );
+        counts[2] += 1;
+
+        let (u, t) = (d.unit_quat(), d.unit_quat());
+        let alpha = match d.below(4) {
+            0 => 0.0,
+            1 => 1.0,
+            _ => d.uniform(0.0, 1.0),
+        };
+        assert!(c::slerp_requires(u, t, alpha), "{u:?} {t:?} {alpha}");
+        let s = u.slerp(t, alpha);
+        assert!(
+            c::slerp_ensures(u, alpha, s),
+            "{u:?}.slerp({t:?}, {alpha}) = {s:?}"
+        );
+        counts[3] += 1;
+
+        let (f, g) = (
+            RigTForm::new(bounded_vec(&mut d), a),
+            RigTForm::new(bounded_vec(&mut d), b),
+        );
+        assert!(c::rigtform_inv_requires(f) && c::rigtform_inv_requires(g));
+        assert!(c::rigtform_inv_ensures(f, f.inv()), "{f:?}.inv()");
+        assert!(c::rigtform_inv_ensures(g, g.inv()), "{g:?}.inv()");
+        counts[4] += 1;
+        let p = bounded_vec(&mut d);
+        assert!(c::transform_point_requires(f, p));
+        assert!(
+            c::transform_point_ensures(f.transform_point(p)),
+            "{f:?} {p:?}"
+        );
+        counts[5] += 1;
+    }
+    println!(
+        "contracts held on: normalize {}, quat product {}, rotate {}, slerp {}, rigtform inv {}, \
+         transform_point {} inputs",
+        counts[0], counts[1], counts[2], counts[3], counts[4], counts[5]
+    );
+    assert!(counts.iter().all(|&n| n >= DRAWS), "{counts:?}");
+}
+
+/// The square root Kani reads (`float/sqrt_kani.rs`) describes the
+/// library's: on every 4096th bit pattern that is a positive finite f32.
+#[test]
+fn kanis_square_root_is_the_librarys() {
+    use rigtform::kani_kernels::{is_correctly_rounded_sqrt, sqrt};
+    let mut checked = 0;
+    for x in (0..0x7f80_0000_u32)
+        .step_by(4096)
+        .map(f32::from_bits)
+        .filter(|&x| x > 0.0)
+    {
+        assert!(
+            is_correctly_rounded_sqrt(x, sqrt(x)),
+            "sqrt({x:e}) = {:e}",
+            sqrt(x)
+        );
+        checked += 1;
+    }
+    assert!(checked > 500_000, "{checked}");
+}
+
+#[test]
+fn the_contracts_reject_what_the_operations_must_not_give() {
+    let u = Quat::from_rotation_x(0.5);
+    let off = Quat::from_xyzw(0.0, 0.0, 0.0, 1.0 + 1e-5);
+    assert!(!c::quat_mul_ensures(u, u, Quat::NAN));
+    assert!(!c::quat_mul_ensures(u, u, off));
+    assert!(c::quat_mul_ensures(u, u, u * u));
+    assert!(!c::quat_mul_requires(
+        u,
+        Quat::from_xyzw(1.5, 0.0, 0.0, 0.0)
+    ));
+    assert!(!c::normalize_ensures(
+        Quat::from_xyzw(2.0, 0.0, 0.0, 0.0),
+        Quat::from_xyzw(2.0, 0.0, 0.0, 0.0)
+    ));
+    assert!(!c::normalize_ensures(
+        Quat::from_xyzw(0.0, 0.0, 0.0, 0.0),
+        Quat::IDENTITY
+    ));
+    assert!(!c::normalize_ensures(u, off));
+    assert!(!c::is_conjugate(u, u));
+    assert!(!c::is_conjugate(
+        Quat::IDENTITY,
+        Quat::from_xyzw(0.0, 0.0, 0.0, 1.0)
+    )); // +0 is not -0
+    assert!(!c::rotate_ensures(u, Cvec3::X, Cvec3::X * (1.0 + 1e-4)));
+    assert!(!c::rotate_ensures(
+        u,
+        Cvec3::X,
+        Cvec3::new(f32::NAN, 0.0, 0.0)
+    ));
+    assert!(!c::slerp_ensures(u, 0.0, u * u));
+    assert!(!c::slerp_ensures(u, 0.5, Quat::NAN));
+    assert!(!c::slerp_requires(u, u, 1.5));
+    let f = RigTForm::new(Cvec3::X, u);
+    assert!(!c::rigtform_inv_ensures(f, f));
+    assert!(!c::transform_point_ensures(Cvec3::new(0.0, f32::NAN, 0.0)));
+    assert!(!c::transform_point_requires(
+        f,
+        Cvec3::new(0.0, 0.0, c::VEC_BOUND * 2.0)
+    ));
+}
+
+/// The bound a Gappa model proves for an accuracy constant: the number
+/// after the constant's name on the model's `#!` line.
+fn proven(model: &str, constant: &str) -> f64 {
+    let path = format!("{}/gappa/{model}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    text.lines()
+        .filter_map(|line| line.strip_prefix("#!"))
+        .find_map(|line| {
+            let words: Vec<&str> = line.split_whitespace().collect();
+            let at = words.iter().position(|w| *w == constant)?;
+            words.get(at + 1)?.parse().ok()
+        })
+        .unwrap_or_else(|| panic!("{path} has no #! line for {constant}"))
+}
+
+#[test]
+fn the_contracts_state_no_tighter_bounds_than_gappa_proves() {
+    for (name, stated, model, constant) in [
+        (
+            "MUL_ERROR_PROVEN",
+            c::MUL_ERROR_PROVEN,
+            "mul.g",
+            "UNIT_NORM_ERROR",
+        ),
+        (
+            "NORMALIZE_NORM_PROVEN",
+            c::NORMALIZE_NORM_PROVEN,
+            "normalize.g",
+            "NORMALIZE_MAX_NORM_ERROR",
+        ),
+        (
+            "ROTATE_ERROR_PROVEN",
+            c::ROTATE_ERROR_PROVEN,
+            "rotate.g",
+            "ROTATE_MAX_REL_ERROR",
+        ),
+    ] {
+        let bound = proven(model, constant);
+        println!("{name} = {stated:e}; {model} proves {bound:e}");
+        assert!(
+            stated >= bound,
+            "{name} = {stated:e} is tighter than {model}'s {bound:e}"
+        );
+    }
+}
