@@ -306,7 +306,7 @@ impl Mul<RigTForm> for RigTForm {
     /// ```
     #[inline]
     fn mul(self, o: RigTForm) -> RigTForm {
-        RigTForm::new(self.t + self.r * o.t, self.r * o.r)
+        self.mul_rig_tform(o)
     }
 }
 

@@ -130,6 +130,8 @@ fn the_core_operations_meet_their_contracts_on_edge_and_random_inputs() {
         assert!(c::rigtform_inv_requires(f) && c::rigtform_inv_requires(g));
         assert!(c::rigtform_inv_ensures(f, f.inv()), "{f:?}.inv()");
         assert!(c::rigtform_inv_ensures(g, g.inv()), "{g:?}.inv()");
+        assert!(c::rigtform_mul_requires(f, g));
+        assert!(c::rigtform_mul_ensures(f, g, f * g), "{f:?} * {g:?}");
         counts[4] += 1;
         let p = bounded_vec(&mut d);
         assert!(c::transform_point_requires(f, p));
@@ -140,7 +142,7 @@ fn the_core_operations_meet_their_contracts_on_edge_and_random_inputs() {
         counts[5] += 1;
     }
     println!(
-        "contracts held on: normalize {}, quat product {}, rotate {}, slerp {}, rigtform inv {}, \
+        "contracts held on: normalize {}, quat product {}, rotate {}, slerp {}, rigtform inv and product {}, \
          transform_point {} inputs",
         counts[0], counts[1], counts[2], counts[3], counts[4], counts[5]
     );
@@ -204,6 +206,16 @@ fn the_contracts_reject_what_the_operations_must_not_give() {
     assert!(!c::slerp_requires(u, u, 1.5));
     let f = RigTForm::new(Cvec3::X, u);
     assert!(!c::rigtform_inv_ensures(f, f));
+    assert!(!c::rigtform_mul_ensures(
+        f,
+        f,
+        RigTForm::new(Cvec3::new(f32::INFINITY, 0.0, 0.0), u * u)
+    ));
+    assert!(!c::rigtform_mul_ensures(
+        f,
+        f,
+        RigTForm::new(Cvec3::X, u * 1.01)
+    ));
     assert!(!c::transform_point_ensures(Cvec3::new(0.0, f32::NAN, 0.0)));
     assert!(!c::transform_point_requires(
         f,

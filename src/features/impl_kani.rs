@@ -213,6 +213,20 @@ pub fn rigtform_inv_ensures(a: RigTForm, r: RigTForm) -> bool {
     r.t.is_finite() && is_conjugate(a.r, r.r)
 }
 
+/// `a * b` of transforms requires: both [`is_rigid_bounded`].
+#[must_use]
+pub fn rigtform_mul_requires(a: RigTForm, b: RigTForm) -> bool {
+    is_rigid_bounded(a) && is_rigid_bounded(b)
+}
+
+/// `a * b = r` of transforms ensures: `r.t` finite, and `r.r` what the
+/// quaternion product ensures of `a.r * b.r` ([`quat_mul_ensures`]: unit
+/// for unit rotations, within the proven bound).
+#[must_use]
+pub fn rigtform_mul_ensures(a: RigTForm, b: RigTForm, r: RigTForm) -> bool {
+    r.t.is_finite() && quat_mul_ensures(a.r, b.r, r.r)
+}
+
 /// `a.transform_point(p)` requires: `a` [`is_rigid_bounded`], `p`
 /// [bounded](is_bounded).
 #[must_use]
@@ -319,6 +333,12 @@ mod contract_harnesses {
     #[kani::proof_for_contract(RigTForm::inv)]
     fn rig_tform_inv() {
         let _ = any_rig_tform().inv();
+    }
+
+    #[kani::solver(cadical)]
+    #[kani::proof_for_contract(RigTForm::mul_rig_tform)]
+    fn rig_tform_product() {
+        let _ = any_rig_tform().mul_rig_tform(any_rig_tform());
     }
 
     #[kani::solver(cadical)]

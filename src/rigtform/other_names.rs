@@ -13,6 +13,29 @@ use crate::quat::Quat;
 use crate::vec::Cvec3;
 
 impl RigTForm {
+    /// `self * other`, the composition (the notes' "rbt * rbt"): glam's
+    /// way of naming a product (`mul_quat`, `mul_mat4`).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let a = RigTForm::new(Cvec3::X, Quat::from_rotation_z(0.3));
+    /// let b = RigTForm::new(Cvec3::Y, Quat::from_rotation_x(0.2));
+    /// assert_eq!(a.mul_rig_tform(b), a * b);
+    /// ```
+    ///
+    /// `*` calls this method, so its Kani contract (`docs/kani.md`) covers
+    /// both spellings.
+    #[cfg_attr(
+        kani,
+        kani::requires(crate::kani_contracts::rigtform_mul_requires(self, other))
+    )]
+    #[cfg_attr(kani, kani::ensures(|r: &RigTForm| crate::kani_contracts::rigtform_mul_ensures(self, other, *r)))]
+    #[inline]
+    #[must_use]
+    pub fn mul_rig_tform(self, other: Self) -> Self {
+        Self::new(self.t + self.r * other.t, self.r * other.r)
+    }
+
     /// The transform that rotates by `r`, then translates by `t`, glam's
     /// `Affine3A::from_rotation_translation` (arguments in that order): the
     /// same as [`RigTForm::new(t, r)`](Self::new).
