@@ -1,6 +1,7 @@
 //! [`OrientationFilter`]: gyroscope + accelerometer (6D) and + magnetometer
 //! (9D) attitude estimation, with gyro-bias estimation.
 
+use super::diagnostics::Flags;
 use super::low_pass::{butterworth, butterworth_step, low_pass, smoothing_factor};
 use super::rest::RestDetector;
 use super::{Diagnostics, FilterParams};
@@ -111,7 +112,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///
 /// # State and cost
 ///
-/// 256 bytes including the 56 of the parameters (`size_of`, checked by a
+/// 244 bytes including the 56 of the parameters (`size_of`, checked by a
 /// test and by `cargo xtask filter-cost` on the target), no allocation. A
 /// 6D update costs three quaternion products, three vector rotations, four
 /// normalizations, an atan2, the low-pass of the accelerometer and of two
@@ -123,7 +124,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
 /// LTO), counted by `cargo xtask filter-cost`, which fails above the
 /// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
-/// state: 1,548 (6D) and 2,019 (9D).
+/// state: 1,562 (6D) and 2,029 (9D).
 ///
 /// # Bad input
 ///
@@ -243,13 +244,11 @@ pub struct OrientationFilter {
     /// one.
     last_rate: Cvec3,
     rest: RestDetector,
-    /// Reference field in the earth frame as (horizontal, vertical, 0);
+    /// Reference field in the earth frame as (horizontal, vertical);
     /// zero until the first usable magnetometer sample (a usable field has
     /// a horizontal part, so zero is never a reference). Finite, so that
     /// every serde format, JSON included, holds it.
-    mag_reference: Cvec3,
-    /// Whether the inclination has been set from an accelerometer sample.
-    initialized: bool,
+    mag_reference: [f32; 2],
     /// Negative until a field has passed the disturbance gate (until then
     /// the reference is one sample's, and a field outside the gate
     /// replaces it and sets the heading: the first may have been a
@@ -262,7 +261,12 @@ pub struct OrientationFilter {
     /// saturated gyro sample: the corrections' time constants are at most
     /// this.
     settling: f32,
-    diagnostics: Diagnostics,
+    /// [`Diagnostics::acc_error`] and [`Diagnostics::mag_error`].
+    acc_error: f32,
+    mag_error: f32,
+    /// The flags of [`Diagnostics`], and whether the inclination has been
+    /// set (from an accelerometer sample or a starting attitude).
+    flags: Flags,
     /// The earth's x and y axes in the sensor frame (the first two rows of
     /// the attitude's matrix), through the same low-pass as the
     /// accelerometer, and their rates times `tau_acc`.
@@ -295,24 +299,15 @@ impl OrientationFilter {
             bias: Cvec3::ZERO,
             last_rate: Cvec3::ZERO,
             rest: RestDetector::new(),
-            mag_reference: Cvec3::ZERO,
-            initialized: false,
+            mag_reference: [0.0; 2],
             mag_shut: -1.0,
             bias_variance: params.max_bias * params.max_bias,
             settling: 0.0,
             axes_average: [Cvec3::X, Cvec3::Y],
             axes_rate: [Cvec3::ZERO, Cvec3::ZERO],
-            diagnostics: Diagnostics {
-                acc_error: 0.0,
-                mag_error: 0.0,
-                initialising: true,
-                recovering: false,
-                gyro_saturated: false,
-                gyro_ignored: false,
-                resting: false,
-                acc_ignored: false,
-                mag_ignored: false,
-            },
+            acc_error: 0.0,
+            mag_error: 0.0,
+            flags: Flags::new(Flags::INITIALISING),
         }
     }
 
@@ -349,10 +344,9 @@ impl OrientationFilter {
         f.correction = attitude;
         f.acc_average = Cvec3::new(0.0, 0.0, params.gravity);
         f.axes_average = horizontal_axes(attitude);
-        f.initialized = true;
         // Settled long ago; finite, so that JSON holds it.
         f.settling = f32::MAX;
-        f.diagnostics.initialising = false;
+        f.flags = Flags::new(Flags::INITIALIZED);
         f
     }
 
@@ -520,7 +514,7 @@ impl OrientationFilter {
         let half_turn = core::f32::consts::PI * core::f32::consts::PI;
         let usable = |rate: Cvec3| ((rate - self.bias) * dt).norm_squared() <= half_turn;
         let ignored = !usable(gyr);
-        self.diagnostics.gyro_ignored = ignored;
+        self.flags.set(Flags::GYRO_IGNORED, ignored);
         if ignored && !usable(self.last_rate) {
             return Quat::NAN;
         }
@@ -534,7 +528,7 @@ impl OrientationFilter {
         // unusable one.
         let saturated =
             !ignored && gyr.x.abs().max(gyr.y.abs()).max(gyr.z.abs()) >= SATURATION * p.gyro_range;
-        let spinning = saturated && self.diagnostics.gyro_saturated;
+        let spinning = saturated && self.flags.get(Flags::GYRO_SATURATED);
         let gyr = if ignored || (saturated && !spinning) {
             self.last_rate
         } else {
@@ -553,18 +547,18 @@ impl OrientationFilter {
         let resting = acc.is_some() && self.is_resting();
         if spinning {
             self.settling = 0.0;
-            self.diagnostics.recovering = true;
-        } else if self.initialized {
+            self.flags.set(Flags::RECOVERING, true);
+        } else if self.flags.get(Flags::INITIALIZED) {
             // Finite, so that JSON holds it.
             self.settling = (self.settling + dt).min(f32::MAX);
         }
         let settled = self.settling >= p.tau_acc;
         if settled {
-            self.diagnostics.initialising = false;
-            self.diagnostics.recovering = false;
+            self.flags.set(Flags::INITIALISING, false);
+            self.flags.set(Flags::RECOVERING, false);
         }
-        self.diagnostics.gyro_saturated = saturated;
-        self.diagnostics.resting = resting;
+        self.flags.set(Flags::GYRO_SATURATED, saturated);
+        self.flags.set(Flags::RESTING, resting);
         // The bias estimate's variance grows as the bias wanders, and at
         // rest falls towards what the raw gyro tells.
         // The estimate is clipped to max_bias, so its variance stays below
@@ -584,18 +578,19 @@ impl OrientationFilter {
         // vector, for the bias. The heading correction is left out: a
         // magnetic disturbance must not reach the bias either.
         let factors = butterworth(dt, p.tau_acc.min(self.settling));
-        let first = !self.initialized;
+        let first = !self.flags.get(Flags::INITIALIZED);
         let drift = match acc {
             Some(acc) => self.correct_inclination(acc, factors),
             None => None,
         };
         let corrected = drift.is_some();
-        self.diagnostics.acc_ignored = !corrected;
+        self.flags.set(Flags::ACC_IGNORED, !corrected);
         let drift = drift.unwrap_or(Cvec3::ZERO);
-        self.diagnostics.acc_error = drift.norm();
+        self.acc_error = drift.norm();
         let heading = mag.map(|mag| self.correct_heading(mag, dt));
-        self.diagnostics.mag_ignored = heading.is_some_and(|h| h.is_none());
-        self.diagnostics.mag_error = heading.flatten().unwrap_or(0.0);
+        self.flags
+            .set(Flags::MAG_IGNORED, heading.is_some_and(|h| h.is_none()));
+        self.mag_error = heading.flatten().unwrap_or(0.0);
 
         let attitude = self.attitude();
         if acc.is_some() {
@@ -649,11 +644,11 @@ impl OrientationFilter {
     fn correct_inclination(&mut self, acc: Cvec3, factors: (f32, f32)) -> Option<Cvec3> {
         let p = self.params;
         let inertial = self.strapdown * acc;
-        let first = !self.initialized;
+        let first = !self.flags.get(Flags::INITIALIZED);
         if first {
             self.acc_average = inertial;
             self.acc_rate = Cvec3::ZERO;
-            self.initialized = true;
+            self.flags.set(Flags::INITIALIZED, true);
         }
         let (average, rate) = butterworth_step(self.acc_average, self.acc_rate, inertial, factors);
         let length = average.norm();
@@ -695,7 +690,7 @@ impl OrientationFilter {
             return None;
         }
         let seen = Cvec3::new(horizontal, field.z, 0.0);
-        let reference = self.mag_reference;
+        let reference = self.mag_reference();
         let length = reference.norm();
         // Finite: seen and reference are, and far below f32::MAX apart in
         // each component. Its norm may overflow to infinity.
@@ -707,13 +702,13 @@ impl OrientationFilter {
         let confirmed = self.mag_shut >= 0.0;
         let first = length == 0.0 || !(inside || confirmed);
         if first {
-            self.mag_reference = seen;
+            self.mag_reference = [seen.x, seen.y];
         } else if !inside && self.mag_shut >= MAG_REFERENCE_TAU {
             // The gate has been shut for MAG_REFERENCE_TAU: a new
             // environment, or a burst of identical glitches that confirmed
             // itself as the first fields. The field becomes the reference,
             // and corrects the heading as any field that passes does.
-            self.mag_reference = seen;
+            self.mag_reference = [seen.x, seen.y];
             self.mag_shut = 0.0;
         } else {
             // The reference follows the field, but no faster than it would
@@ -727,7 +722,8 @@ impl OrientationFilter {
                 1.0
             };
             let alpha = smoothing_factor(dt, MAG_REFERENCE_TAU);
-            self.mag_reference = reference + offset * (alpha * pull);
+            let moved = reference + offset * (alpha * pull);
+            self.mag_reference = [moved.x, moved.y];
             if !inside {
                 if confirmed {
                     // Finite, so that JSON holds it.
@@ -767,7 +763,14 @@ impl OrientationFilter {
     #[inline]
     #[must_use]
     pub fn diagnostics(&self) -> Diagnostics {
-        self.diagnostics
+        self.flags.diagnostics(self.acc_error, self.mag_error)
+    }
+
+    /// The reference field in the earth frame as (horizontal, vertical, 0).
+    #[inline]
+    fn mag_reference(&self) -> Cvec3 {
+        let [horizontal, vertical] = self.mag_reference;
+        Cvec3::new(horizontal, vertical, 0.0)
     }
 }
 
