@@ -12,6 +12,13 @@ use crate::vec::Cvec3;
 /// Time constant with which the magnetic reference follows the field.
 const MAG_REFERENCE_TAU: f32 = 60.0;
 
+/// The largest hard-iron estimate, in units of the reference field's
+/// length. A magnet that swamps the earth's field twice over leaves no
+/// heading to measure (a few percent of error in its estimate is as large
+/// as the horizontal field); the bound also keeps the estimate finite
+/// whatever fields were taken for the reference.
+const MAX_HARD_IRON: f32 = 2.0;
+
 /// The peak of the accelerometer low-pass's impulse response, times
 /// `tau_acc` per unit of impulse: `2 exp(-x) sin(x)` at `x = pi / 4`
 /// (see [`butterworth`]). A sample that departs from gravity by `a` for
@@ -244,6 +251,10 @@ pub struct OrientationFilter {
     /// one.
     last_rate: Cvec3,
     rest: RestDetector,
+    /// The hard-iron estimate: the field fixed to the sensor (a magnet on
+    /// it), in the magnetometer's unit and the sensor frame, taken off
+    /// every magnetometer reading.
+    hard_iron: Cvec3,
     /// Reference field in the earth frame as (horizontal, vertical);
     /// zero until the first usable magnetometer sample (a usable field has
     /// a horizontal part, so zero is never a reference). Finite, so that
@@ -299,6 +310,7 @@ impl OrientationFilter {
             bias: Cvec3::ZERO,
             last_rate: Cvec3::ZERO,
             rest: RestDetector::new(),
+            hard_iron: Cvec3::ZERO,
             mag_reference: [0.0; 2],
             mag_shut: -1.0,
             bias_variance: params.max_bias * params.max_bias,
@@ -526,8 +538,10 @@ impl OrientationFilter {
         // readings is a glitch (or the first sample of a spin), whose rate
         // the last reading below the range gives better, as for an
         // unusable one.
-        let saturated =
-            !ignored && gyr.x.abs().max(gyr.y.abs()).max(gyr.z.abs()) >= SATURATION * p.gyro_range;
+        let saturated = !ignored && {
+            let range = SATURATION * p.gyro_range;
+            gyr.x.abs() >= range || gyr.y.abs() >= range || gyr.z.abs() >= range
+        };
         let spinning = saturated && self.flags.get(Flags::GYRO_SATURATED);
         let gyr = if ignored || (saturated && !spinning) {
             self.last_rate
@@ -550,7 +564,7 @@ impl OrientationFilter {
             self.flags.set(Flags::RECOVERING, true);
         } else if self.flags.get(Flags::INITIALIZED) {
             // Finite, so that JSON holds it.
-            self.settling = (self.settling + dt).min(f32::MAX);
+            self.settling = min(self.settling + dt, f32::MAX);
         }
         let settled = self.settling >= p.tau_acc;
         if settled {
@@ -563,8 +577,10 @@ impl OrientationFilter {
         // rest falls towards what the raw gyro tells.
         // The estimate is clipped to max_bias, so its variance stays below
         // max_bias^2 (which also keeps it finite).
-        self.bias_variance =
-            (self.bias_variance + p.bias_drift * p.bias_drift * dt).min(p.max_bias * p.max_bias);
+        self.bias_variance = min(
+            self.bias_variance + p.bias_drift * p.bias_drift * dt,
+            p.max_bias * p.max_bias,
+        );
         if resting {
             let alpha = smoothing_factor(dt, p.tau_bias_rest);
             self.set_bias(low_pass(self.bias, gyr, alpha));
@@ -577,7 +593,7 @@ impl OrientationFilter {
         // The inclination correction in the earth frame, as a rotation
         // vector, for the bias. The heading correction is left out: a
         // magnetic disturbance must not reach the bias either.
-        let factors = butterworth(dt, p.tau_acc.min(self.settling));
+        let factors = butterworth(dt, min(p.tau_acc, self.settling));
         let first = !self.flags.get(Flags::INITIALIZED);
         let drift = match acc {
             Some(acc) => self.correct_inclination(acc, factors),
@@ -587,7 +603,17 @@ impl OrientationFilter {
         self.flags.set(Flags::ACC_IGNORED, !corrected);
         let drift = drift.unwrap_or(Cvec3::ZERO);
         self.acc_error = drift.norm();
-        let heading = mag.map(|mag| self.correct_heading(mag, dt));
+        // The hard-iron estimate learns while the sensor turns (see
+        // `correct_heading`), once settled, and while the inclination is
+        // known: corrected in this sample (the accelerometer average is
+        // within its gate of gravity), and slower than `max_bias` (a
+        // faster correction is convergence, after a gap in the gyro, say,
+        // whose attitude gets the field's dip wrong).
+        let heading = mag.map(|mag| {
+            let turning = (gyr - self.bias).norm_squared() > p.rest_gyro * p.rest_gyro;
+            let level = corrected && self.acc_error <= p.max_bias * dt;
+            self.correct_heading(mag, dt, settled && turning && level)
+        });
         self.flags
             .set(Flags::MAG_IGNORED, heading.is_some_and(|h| h.is_none()));
         self.mag_error = heading.flatten().unwrap_or(0.0);
@@ -679,35 +705,78 @@ impl OrientationFilter {
 
     /// Turns the correction about the vertical towards magnetic north, if
     /// the field passes the disturbance gate. Returns the heading error it
-    /// saw (radians east of north), `None` if the field was not used.
-    fn correct_heading(&mut self, mag: Cvec3, dt: f32) -> Option<f32> {
+    /// saw (radians east of north), `None` if the field was not used. The
+    /// hard-iron estimate learns from the field only if `learn`.
+    fn correct_heading(&mut self, mag: Cvec3, dt: f32, learn: bool) -> Option<f32> {
         let p = self.params;
-        let field = self.attitude() * mag;
-        let horizontal = Cvec3::new(field.x, field.y, 0.0).norm();
-        // NaN, infinite or zero field, one without a horizontal part, or
-        // one so large that its rotation or length overflows.
-        if !(field.is_finite() && horizontal.is_finite() && horizontal > 0.0) {
-            return None;
-        }
-        let seen = Cvec3::new(horizontal, field.z, 0.0);
+        let attitude = self.attitude();
         let reference = self.mag_reference();
         let length = reference.norm();
+        // The hard-iron estimate is taken off while it is beyond the
+        // gate's radius (fully from twice that on): a smaller one lets the
+        // field pass the gate as it is, and is the calibration's residual
+        // error (a soft-iron or scale error, or a sensor-fixed field of a
+        // microtesla), which turns with the sensor and so averages out of
+        // the heading, where an estimate of it, wandering with the
+        // attitudes of the last `tau_mag` seconds, would not.
+        let strength = self.hard_iron.norm_squared();
+        let radius = p.mag_gate * length;
+        let least = if radius > 0.0 { radius } else { 0.0 };
+        let taken = if strength > 4.0 * least * least {
+            1.0
+        } else if strength > least * least {
+            float::sqrt(strength) / least - 1.0
+        } else {
+            0.0
+        };
+        let mut corrected = mag - self.hard_iron * taken;
+        let mut field = attitude * corrected;
+        let mut horizontal = horizontal_part(field);
+        if horizontal.is_none() {
+            // A reading that is usable as it is, but not once the estimate
+            // is taken off: the estimate has grown beyond any field (after
+            // huge glitches were taken for the reference), and starts over.
+            let raw = attitude * mag;
+            horizontal = horizontal_part(raw);
+            if horizontal.is_some() {
+                self.hard_iron = Cvec3::ZERO;
+                corrected = mag;
+                field = raw;
+            }
+        }
+        let horizontal = horizontal?;
+        let mut seen = Cvec3::new(horizontal, field.z, 0.0);
         // Finite: seen and reference are, and far below f32::MAX apart in
         // each component. Its norm may overflow to infinity.
         let offset = seen - reference;
         let distance = offset.norm();
-        let inside = distance <= p.mag_gate * length;
+        let inside = distance <= radius;
         // No reference yet, or one sample's that the next field disputes:
         // the field sets the heading at once and becomes the reference.
         let confirmed = self.mag_shut >= 0.0;
         let first = length == 0.0 || !(inside || confirmed);
+        let fraction = if first {
+            1.0
+        } else {
+            smoothing_factor(dt, min(p.tau_mag, self.settling))
+        };
         if first {
             self.mag_reference = [seen.x, seen.y];
         } else if !inside && self.mag_shut >= MAG_REFERENCE_TAU {
             // The gate has been shut for MAG_REFERENCE_TAU: a new
             // environment, or a burst of identical glitches that confirmed
             // itself as the first fields. The field becomes the reference,
-            // and corrects the heading as any field that passes does.
+            // and corrects the heading as any field that passes does; the
+            // hard-iron estimate, part of the model that failed, starts
+            // over.
+            if self.hard_iron != Cvec3::ZERO {
+                let raw = attitude * mag;
+                if let Some(horizontal) = horizontal_part(raw) {
+                    self.hard_iron = Cvec3::ZERO;
+                    field = raw;
+                    seen = Cvec3::new(horizontal, field.z, 0.0);
+                }
+            }
             self.mag_reference = [seen.x, seen.y];
             self.mag_shut = 0.0;
         } else {
@@ -724,6 +793,47 @@ impl OrientationFilter {
             let alpha = smoothing_factor(dt, MAG_REFERENCE_TAU);
             let moved = reference + offset * (alpha * pull);
             self.mag_reference = [moved.x, moved.y];
+            // The hard-iron estimate low-passes, in the sensor frame, the
+            // part of the reading's disagreement with the reference that no
+            // heading error explains: in the earth frame, the difference of
+            // the horizontal parts along the field's own horizontal
+            // direction, and of the vertical parts (a heading error turns
+            // the field about the vertical, which changes neither). A field
+            // fixed to the sensor (a magnet carried with it) stays put in
+            // that frame and is learned; one fixed to the earth (iron
+            // nearby) turns in it as the sensor turns, and averages out
+            // over the turns made within the heading correction's time
+            // constant, with which the estimate follows. While the sensor
+            // turns slower than `rest_gyro`, nothing tells the two apart
+            // (neither turns against the other), so it holds; and while
+            // the filter settles, since the attitude is not yet to be
+            // trusted. Its step is clipped as the reference's: a single
+            // reading moves it by at most the fraction of the reference's
+            // length that the heading correction takes in one step.
+            if learn {
+                // In the sensor frame: the corrected reading (the field
+                // rotated back) scaled along, and the vertical difference
+                // along up (the attitude matrix's third row).
+                let along = offset.x / horizontal;
+                let Quat { w, x, y, z } = attitude;
+                let up = Cvec3::new(
+                    2.0 * (x * z - w * y),
+                    2.0 * (y * z + w * x),
+                    1.0 - 2.0 * (x * x + y * y),
+                );
+                // The disagreement of the reading itself: the corrected
+                // field's, plus the part of the estimate taken off.
+                let step = corrected * along + up * (offset.y - field.z * along)
+                    - self.hard_iron * (1.0 - taken);
+                let estimate = self.hard_iron + step * (fraction * pull);
+                let limit = MAX_HARD_IRON * length;
+                let bound = limit * limit;
+                // NaN and infinity fail too (a bound that overflows holds
+                // the estimate).
+                if bound <= f32::MAX && estimate.norm_squared() <= bound {
+                    self.hard_iron = estimate;
+                }
+            }
             if !inside {
                 if confirmed {
                     // Finite, so that JSON holds it.
@@ -736,11 +846,6 @@ impl OrientationFilter {
         // The field's angle east of north; turning by it about +z brings
         // it to north.
         let error = float::atan2(field.x, field.y);
-        let fraction = if first {
-            1.0
-        } else {
-            smoothing_factor(dt, p.tau_mag.min(self.settling))
-        };
         let turn = Quat::from_rotation_z(error * fraction);
         self.correction = (turn * self.correction).normalize();
         Some(error)
@@ -799,10 +904,40 @@ fn plausible_specific_force(acc: Cvec3, dt: f32, p: &FilterParams) -> Option<Cve
     if !(length > 0.0 && length <= MAX_SPECIFIC_FORCE * p.gravity) {
         return None;
     }
-    let tau = p.tau_acc.max(0.0);
-    let impulse = (length - p.gravity).abs() * dt.min(tau);
+    let tau = max(p.tau_acc, 0.0);
+    let impulse = (length - p.gravity).abs() * min(dt, tau);
     let bound = p.acc_gate * p.gravity * tau * (0.5 / IMPULSE_PEAK);
     (impulse <= bound).then_some(acc)
+}
+
+/// The length of the horizontal part of `field` (earth frame), if the
+/// field can give a heading: finite, with a horizontal part, and neither
+/// its rotation nor its length overflowed.
+fn horizontal_part(field: Cvec3) -> Option<f32> {
+    let horizontal = Cvec3::new(field.x, field.y, 0.0).norm();
+    (field.is_finite() && horizontal.is_finite() && horizontal > 0.0).then_some(horizontal)
+}
+
+/// `a.min(b)` for operands that are not NaN, as one comparison: on the
+/// Cortex-M4F, `f32::min` is a library call (NaN-aware), ten times as many
+/// instructions.
+#[inline(always)]
+fn min(a: f32, b: f32) -> f32 {
+    if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+/// `a.max(b)` for operands that are not NaN, as [`min`].
+#[inline(always)]
+fn max(a: f32, b: f32) -> f32 {
+    if b > a {
+        b
+    } else {
+        a
+    }
 }
 
 /// The earth's x and y axes in the sensor frame: the first two rows of

@@ -65,7 +65,7 @@ fn tumble(t: f32) -> Cvec3 {
 
 #[test]
 fn state_size_is_as_documented() {
-    assert_eq!(core::mem::size_of::<OrientationFilter>(), 244);
+    assert_eq!(core::mem::size_of::<OrientationFilter>(), 256);
     assert_eq!(core::mem::size_of::<FilterParams>(), 56);
 }
 
