@@ -89,10 +89,12 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///    of the horizontal parts, along the field's own horizontal direction,
 ///    and of the vertical parts), with `tau_mag`, over which the fields of
 ///    an earth-fixed disturbance turn and average out. It learns only
-///    while the sensor turns faster than `rest_gyro` (at rest nothing
-///    tells the two apart), once settled, and while the inclination is
-///    known (corrected in that sample, slower than `max_bias`: the dip
-///    depends on it); its step is clipped as the reference's. It is taken
+///    while the sensor turns faster than `rest_gyro`, once settled, and
+///    while the inclination is known (corrected in that sample, slower
+///    than `max_bias`: the dip depends on it); its step is clipped as the
+///    reference's. While the sensor turns slower, nothing tells the two
+///    kinds of field apart and nothing confirms the estimate: it fades
+///    over 60 s, as the reference renews. It is taken
 ///    off only beyond the gate's radius (in full from twice that on): a
 ///    smaller one lets the field pass the gate as it is, and is the
 ///    calibration's residual error, which turns with the sensor and
@@ -153,7 +155,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
 /// LTO), counted by `cargo xtask filter-cost`, which fails above the
 /// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
-/// state: 1,468 (6D) and 2,075 (9D).
+/// state: 1,465 (6D) and 2,082 (9D).
 ///
 /// # Bad input
 ///
@@ -236,7 +238,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///
 /// Measured on real recordings with optical ground truth (BROAD trials 02,
 /// 07, 08, 12, 16, 27 and 33, the last with a magnet fixed 2 cm from the
-/// sensor: 9D total RMSE 1.384°, VQF's 3.752°): see the README's IMU
+/// sensor: 9D total RMSE 1.383°, VQF's 3.752°): see the README's IMU
 /// section, `docs/attitude.md` and the `broad` binary of `compare/`. On
 /// trial 16 (shipped in `testkit/data/`), 6D inclination RMSE below
 /// [`accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG`](crate::accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG)
@@ -642,7 +644,7 @@ impl OrientationFilter {
         let heading = mag.map(|mag| {
             let turning = (gyr - self.bias).norm_squared() > p.rest_gyro * p.rest_gyro;
             let level = corrected && self.acc_error <= p.max_bias * dt;
-            self.correct_heading(mag, dt, settled && turning && level)
+            self.correct_heading(mag, dt, turning, settled && level)
         });
         self.flags
             .set(Flags::MAG_IGNORED, heading.is_some_and(|h| h.is_none()));
@@ -736,8 +738,9 @@ impl OrientationFilter {
     /// Turns the correction about the vertical towards magnetic north, if
     /// the field passes the disturbance gate. Returns the heading error it
     /// saw (radians east of north), `None` if the field was not used. The
-    /// hard-iron estimate learns from the field only if `learn`.
-    fn correct_heading(&mut self, mag: Cvec3, dt: f32, learn: bool) -> Option<f32> {
+    /// hard-iron estimate learns from the field if the sensor is `turning`
+    /// and the attitude `known`, and fades while it is not turning.
+    fn correct_heading(&mut self, mag: Cvec3, dt: f32, turning: bool, known: bool) -> Option<f32> {
         let p = self.params;
         let attitude = self.attitude();
         let reference = self.mag_reference();
@@ -833,14 +836,21 @@ impl OrientationFilter {
             // that frame and is learned; one fixed to the earth (iron
             // nearby) turns in it as the sensor turns, and averages out
             // over the turns made within the heading correction's time
-            // constant, with which the estimate follows. While the sensor
+            // constant, with which the estimate follows. While the filter
+            // settles, or the inclination is not known, the attitude is
+            // not to be trusted, and the estimate holds. While the sensor
             // turns slower than `rest_gyro`, nothing tells the two apart
-            // (neither turns against the other), so it holds; and while
-            // the filter settles, since the attitude is not yet to be
-            // trusted. Its step is clipped as the reference's: a single
-            // reading moves it by at most the fraction of the reference's
-            // length that the heading correction takes in one step.
-            if learn {
+            // (neither turns against the other): nothing confirms the
+            // estimate, and it fades as the reference renews, over
+            // `MAG_REFERENCE_TAU` (a magnet may have gone, or a wrong
+            // estimate been learned; a field that then fails the gate for
+            // that long renews the reference). Its step is clipped as the
+            // reference's: a single reading moves it by at most the
+            // fraction of the reference's length that the heading
+            // correction takes in one step.
+            if !turning {
+                self.hard_iron *= 1.0 - alpha;
+            } else if known {
                 // In the sensor frame: the corrected reading (the field
                 // rotated back) scaled along, and the vertical difference
                 // along up (the attitude matrix's third row).

@@ -877,10 +877,10 @@ fn a_disturbance_fixed_to_the_earth_stays_out_of_the_heading() {
     );
 }
 
-/// At rest nothing tells a magnet from iron nearby: the estimate holds,
+/// At rest nothing tells a magnet from iron nearby: nothing is learned,
 /// and the field stays kept out.
 #[test]
-fn at_rest_the_estimate_holds() {
+fn at_rest_nothing_is_learned() {
     let mut f = settled_on_the_field();
     let level = Cvec3::new(0.0, 0.0, G);
     for _ in 0..3000 {
