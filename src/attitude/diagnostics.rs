@@ -60,3 +60,64 @@ pub struct Diagnostics {
     /// `false` in 6D.
     pub mag_ignored: bool,
 }
+
+/// The flags of [`Diagnostics`] and the filter's own "inclination set"
+/// flag, one bit each, so that the filter's state holds them in one byte.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub(super) struct Flags(u8);
+
+impl Flags {
+    /// [`Diagnostics::initialising`].
+    pub(super) const INITIALISING: u8 = 1;
+    /// [`Diagnostics::recovering`].
+    pub(super) const RECOVERING: u8 = 1 << 1;
+    /// [`Diagnostics::gyro_saturated`].
+    pub(super) const GYRO_SATURATED: u8 = 1 << 2;
+    /// [`Diagnostics::gyro_ignored`].
+    pub(super) const GYRO_IGNORED: u8 = 1 << 3;
+    /// [`Diagnostics::resting`].
+    pub(super) const RESTING: u8 = 1 << 4;
+    /// [`Diagnostics::acc_ignored`].
+    pub(super) const ACC_IGNORED: u8 = 1 << 5;
+    /// [`Diagnostics::mag_ignored`].
+    pub(super) const MAG_IGNORED: u8 = 1 << 6;
+    /// The filter's inclination has been set (from an accelerometer
+    /// sample, or a starting attitude); not a diagnostic.
+    pub(super) const INITIALIZED: u8 = 1 << 7;
+
+    /// The flags in `bits` set, the others clear.
+    #[inline]
+    pub(super) const fn new(bits: u8) -> Self {
+        Self(bits)
+    }
+
+    /// Whether the flag `bit` (one of the constants) is set.
+    #[inline]
+    pub(super) const fn get(self, bit: u8) -> bool {
+        self.0 & bit != 0
+    }
+
+    /// Sets the flag `bit` (one of the constants) to `on`.
+    #[inline]
+    pub(super) fn set(&mut self, bit: u8, on: bool) {
+        self.0 = (self.0 & !bit) | (bit & u8::from(on).wrapping_neg());
+    }
+
+    /// The flags as [`Diagnostics`], with the two errors.
+    #[inline]
+    pub(super) const fn diagnostics(self, acc_error: f32, mag_error: f32) -> Diagnostics {
+        Diagnostics {
+            acc_error,
+            mag_error,
+            initialising: self.get(Self::INITIALISING),
+            recovering: self.get(Self::RECOVERING),
+            gyro_saturated: self.get(Self::GYRO_SATURATED),
+            gyro_ignored: self.get(Self::GYRO_IGNORED),
+            resting: self.get(Self::RESTING),
+            acc_ignored: self.get(Self::ACC_IGNORED),
+            mag_ignored: self.get(Self::MAG_IGNORED),
+        }
+    }
+}

@@ -1,6 +1,7 @@
 //! [`OrientationFilter`]: gyroscope + accelerometer (6D) and + magnetometer
 //! (9D) attitude estimation, with gyro-bias estimation.
 
+use super::diagnostics::Flags;
 use super::low_pass::{butterworth, butterworth_step, low_pass, smoothing_factor};
 use super::rest::RestDetector;
 use super::{Diagnostics, FilterParams};
@@ -10,6 +11,13 @@ use crate::vec::Cvec3;
 
 /// Time constant with which the magnetic reference follows the field.
 const MAG_REFERENCE_TAU: f32 = 60.0;
+
+/// The largest hard-iron estimate, in units of the reference field's
+/// length. A magnet that swamps the earth's field twice over leaves no
+/// heading to measure (a few percent of error in its estimate is as large
+/// as the horizontal field); the bound also keeps the estimate finite
+/// whatever fields were taken for the reference.
+const MAX_HARD_IRON: f32 = 2.0;
 
 /// The peak of the accelerometer low-pass's impulse response, times
 /// `tau_acc` per unit of impulse: `2 exp(-x) sin(x)` at `x = pi / 4`
@@ -70,7 +78,28 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///    (only: a disturbed field can never tilt the estimate) towards
 ///    magnetic north (the horizontal part of the field along +y), by the
 ///    fraction `1 - exp(-dt / tau_mag)` of the heading error, while the
-///    field passes the disturbance gate.
+///    field passes the disturbance gate. Before the gate, a hard-iron
+///    estimate is taken off the reading: the field fixed to the sensor (a
+///    magnet, or a magnetized part, carried with it), which the
+///    calibration cannot know. A field fixed to the sensor stays put in
+///    the sensor frame as the sensor turns, while one fixed to the earth
+///    (iron nearby) turns in it, so the estimate low-passes, in the sensor
+///    frame, the part of each reading's disagreement with the reference
+///    that no heading error explains (in the earth frame: the difference
+///    of the horizontal parts, along the field's own horizontal direction,
+///    and of the vertical parts), with `tau_mag`, over which the fields of
+///    an earth-fixed disturbance turn and average out. It learns only
+///    while the sensor turns faster than `rest_gyro`, once settled, and
+///    while the inclination is known (corrected in that sample, slower
+///    than `max_bias`: the dip depends on it); its step is clipped as the
+///    reference's. While the sensor turns slower, nothing tells the two
+///    kinds of field apart and nothing confirms the estimate: it fades
+///    over 60 s, as the reference renews. It is taken
+///    off only beyond the gate's radius (in full from twice that on): a
+///    smaller one lets the field pass the gate as it is, and is the
+///    calibration's residual error, which turns with the sensor and
+///    averages out of the heading, where the estimate, wandering with the
+///    attitudes of the last `tau_mag` seconds, would not.
 /// 5. Gyro bias: while at rest (rest detection on gyro and accelerometer),
 ///    the bias low-passes the raw gyro. During motion, each inclination
 ///    correction, expressed in the sensor frame, is the drift a bias error
@@ -111,7 +140,8 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///
 /// # State and cost
 ///
-/// 256 bytes including the 56 of the parameters (`size_of`, checked by a
+/// 256 bytes including the 56 of the parameters and the 12 of the
+/// hard-iron estimate (`size_of`, checked by a
 /// test and by `cargo xtask filter-cost` on the target), no allocation. A
 /// 6D update costs three quaternion products, three vector rotations, four
 /// normalizations, an atan2, the low-pass of the accelerometer and of two
@@ -119,11 +149,13 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// `exp_m1` and a sine-cosine where `dt / tau_acc` exceeds 1/16), the
 /// smoothing factors of the rest detector and the bias, and a handful of
 /// vector operations; the magnetometer adds two products, a rotation, an
-/// atan2, a sine-cosine and two smoothing factors. Executed instructions
+/// atan2, a sine-cosine, two smoothing factors and the hard-iron
+/// estimate's step (a row of the attitude matrix and a handful of vector
+/// operations). Executed instructions
 /// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
 /// LTO), counted by `cargo xtask filter-cost`, which fails above the
 /// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
-/// state: 1,548 (6D) and 2,019 (9D).
+/// state: 1,465 (6D) and 2,082 (9D).
 ///
 /// # Bad input
 ///
@@ -184,7 +216,13 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///   disagrees, it replaces it (the first may have been a glitch), until a
 ///   field passes the gate. A gate shut for 60 s (a new environment, or a
 ///   burst of identical glitches that confirmed itself as the first
-///   fields) gives the reference to the current field.
+///   fields) gives the reference to the current field, and the hard-iron
+///   estimate starts over from zero. The estimate moves towards a reading
+///   by at most the fraction `1 - exp(-dt / tau_mag)` of the reference's
+///   length, and stays within twice that length (a step beyond is not
+///   taken); a usable reading that the estimate, taken off, would make
+///   unusable (an estimate grown from huge glitches taken for the
+///   reference) starts it over.
 /// - Parameters: zero or negative time constants mean "immediate" (no
 ///   smoothing), infinite ones "never". While any parameter is NaN, every
 ///   update returns [`Quat::NAN`] and leaves the state unchanged.
@@ -199,7 +237,9 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// # Accuracy
 ///
 /// Measured on real recordings with optical ground truth (BROAD trials 02,
-/// 07 and 16): see the README's IMU section and the `broad` binary of `compare/`. On
+/// 07, 08, 12, 16, 27 and 33, the last with a magnet fixed 2 cm from the
+/// sensor: 9D total RMSE 1.383°, VQF's 3.752°): see the README's IMU
+/// section, `docs/attitude.md` and the `broad` binary of `compare/`. On
 /// trial 16 (shipped in `testkit/data/`), 6D inclination RMSE below
 /// [`accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG`](crate::accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG)
 /// degrees (`tests/broad.rs`).
@@ -243,13 +283,15 @@ pub struct OrientationFilter {
     /// one.
     last_rate: Cvec3,
     rest: RestDetector,
-    /// Reference field in the earth frame as (horizontal, vertical, 0);
+    /// The hard-iron estimate: the field fixed to the sensor (a magnet on
+    /// it), in the magnetometer's unit and the sensor frame, taken off
+    /// every magnetometer reading.
+    hard_iron: Cvec3,
+    /// Reference field in the earth frame as (horizontal, vertical);
     /// zero until the first usable magnetometer sample (a usable field has
     /// a horizontal part, so zero is never a reference). Finite, so that
     /// every serde format, JSON included, holds it.
-    mag_reference: Cvec3,
-    /// Whether the inclination has been set from an accelerometer sample.
-    initialized: bool,
+    mag_reference: [f32; 2],
     /// Negative until a field has passed the disturbance gate (until then
     /// the reference is one sample's, and a field outside the gate
     /// replaces it and sets the heading: the first may have been a
@@ -262,7 +304,12 @@ pub struct OrientationFilter {
     /// saturated gyro sample: the corrections' time constants are at most
     /// this.
     settling: f32,
-    diagnostics: Diagnostics,
+    /// [`Diagnostics::acc_error`] and [`Diagnostics::mag_error`].
+    acc_error: f32,
+    mag_error: f32,
+    /// The flags of [`Diagnostics`], and whether the inclination has been
+    /// set (from an accelerometer sample or a starting attitude).
+    flags: Flags,
     /// The earth's x and y axes in the sensor frame (the first two rows of
     /// the attitude's matrix), through the same low-pass as the
     /// accelerometer, and their rates times `tau_acc`.
@@ -295,24 +342,16 @@ impl OrientationFilter {
             bias: Cvec3::ZERO,
             last_rate: Cvec3::ZERO,
             rest: RestDetector::new(),
-            mag_reference: Cvec3::ZERO,
-            initialized: false,
+            hard_iron: Cvec3::ZERO,
+            mag_reference: [0.0; 2],
             mag_shut: -1.0,
             bias_variance: params.max_bias * params.max_bias,
             settling: 0.0,
             axes_average: [Cvec3::X, Cvec3::Y],
             axes_rate: [Cvec3::ZERO, Cvec3::ZERO],
-            diagnostics: Diagnostics {
-                acc_error: 0.0,
-                mag_error: 0.0,
-                initialising: true,
-                recovering: false,
-                gyro_saturated: false,
-                gyro_ignored: false,
-                resting: false,
-                acc_ignored: false,
-                mag_ignored: false,
-            },
+            acc_error: 0.0,
+            mag_error: 0.0,
+            flags: Flags::new(Flags::INITIALISING),
         }
     }
 
@@ -349,10 +388,9 @@ impl OrientationFilter {
         f.correction = attitude;
         f.acc_average = Cvec3::new(0.0, 0.0, params.gravity);
         f.axes_average = horizontal_axes(attitude);
-        f.initialized = true;
         // Settled long ago; finite, so that JSON holds it.
         f.settling = f32::MAX;
-        f.diagnostics.initialising = false;
+        f.flags = Flags::new(Flags::INITIALIZED);
         f
     }
 
@@ -520,7 +558,7 @@ impl OrientationFilter {
         let half_turn = core::f32::consts::PI * core::f32::consts::PI;
         let usable = |rate: Cvec3| ((rate - self.bias) * dt).norm_squared() <= half_turn;
         let ignored = !usable(gyr);
-        self.diagnostics.gyro_ignored = ignored;
+        self.flags.set(Flags::GYRO_IGNORED, ignored);
         if ignored && !usable(self.last_rate) {
             return Quat::NAN;
         }
@@ -532,9 +570,11 @@ impl OrientationFilter {
         // readings is a glitch (or the first sample of a spin), whose rate
         // the last reading below the range gives better, as for an
         // unusable one.
-        let saturated =
-            !ignored && gyr.x.abs().max(gyr.y.abs()).max(gyr.z.abs()) >= SATURATION * p.gyro_range;
-        let spinning = saturated && self.diagnostics.gyro_saturated;
+        let saturated = !ignored && {
+            let range = SATURATION * p.gyro_range;
+            gyr.x.abs() >= range || gyr.y.abs() >= range || gyr.z.abs() >= range
+        };
+        let spinning = saturated && self.flags.get(Flags::GYRO_SATURATED);
         let gyr = if ignored || (saturated && !spinning) {
             self.last_rate
         } else {
@@ -553,24 +593,26 @@ impl OrientationFilter {
         let resting = acc.is_some() && self.is_resting();
         if spinning {
             self.settling = 0.0;
-            self.diagnostics.recovering = true;
-        } else if self.initialized {
+            self.flags.set(Flags::RECOVERING, true);
+        } else if self.flags.get(Flags::INITIALIZED) {
             // Finite, so that JSON holds it.
-            self.settling = (self.settling + dt).min(f32::MAX);
+            self.settling = min(self.settling + dt, f32::MAX);
         }
         let settled = self.settling >= p.tau_acc;
         if settled {
-            self.diagnostics.initialising = false;
-            self.diagnostics.recovering = false;
+            self.flags.set(Flags::INITIALISING, false);
+            self.flags.set(Flags::RECOVERING, false);
         }
-        self.diagnostics.gyro_saturated = saturated;
-        self.diagnostics.resting = resting;
+        self.flags.set(Flags::GYRO_SATURATED, saturated);
+        self.flags.set(Flags::RESTING, resting);
         // The bias estimate's variance grows as the bias wanders, and at
         // rest falls towards what the raw gyro tells.
         // The estimate is clipped to max_bias, so its variance stays below
         // max_bias^2 (which also keeps it finite).
-        self.bias_variance =
-            (self.bias_variance + p.bias_drift * p.bias_drift * dt).min(p.max_bias * p.max_bias);
+        self.bias_variance = min(
+            self.bias_variance + p.bias_drift * p.bias_drift * dt,
+            p.max_bias * p.max_bias,
+        );
         if resting {
             let alpha = smoothing_factor(dt, p.tau_bias_rest);
             self.set_bias(low_pass(self.bias, gyr, alpha));
@@ -583,19 +625,30 @@ impl OrientationFilter {
         // The inclination correction in the earth frame, as a rotation
         // vector, for the bias. The heading correction is left out: a
         // magnetic disturbance must not reach the bias either.
-        let factors = butterworth(dt, p.tau_acc.min(self.settling));
-        let first = !self.initialized;
+        let factors = butterworth(dt, min(p.tau_acc, self.settling));
+        let first = !self.flags.get(Flags::INITIALIZED);
         let drift = match acc {
             Some(acc) => self.correct_inclination(acc, factors),
             None => None,
         };
         let corrected = drift.is_some();
-        self.diagnostics.acc_ignored = !corrected;
+        self.flags.set(Flags::ACC_IGNORED, !corrected);
         let drift = drift.unwrap_or(Cvec3::ZERO);
-        self.diagnostics.acc_error = drift.norm();
-        let heading = mag.map(|mag| self.correct_heading(mag, dt));
-        self.diagnostics.mag_ignored = heading.is_some_and(|h| h.is_none());
-        self.diagnostics.mag_error = heading.flatten().unwrap_or(0.0);
+        self.acc_error = drift.norm();
+        // The hard-iron estimate learns while the sensor turns (see
+        // `correct_heading`), once settled, and while the inclination is
+        // known: corrected in this sample (the accelerometer average is
+        // within its gate of gravity), and slower than `max_bias` (a
+        // faster correction is convergence, after a gap in the gyro, say,
+        // whose attitude gets the field's dip wrong).
+        let heading = mag.map(|mag| {
+            let turning = (gyr - self.bias).norm_squared() > p.rest_gyro * p.rest_gyro;
+            let level = corrected && self.acc_error <= p.max_bias * dt;
+            self.correct_heading(mag, dt, turning, settled && level)
+        });
+        self.flags
+            .set(Flags::MAG_IGNORED, heading.is_some_and(|h| h.is_none()));
+        self.mag_error = heading.flatten().unwrap_or(0.0);
 
         let attitude = self.attitude();
         if acc.is_some() {
@@ -649,11 +702,11 @@ impl OrientationFilter {
     fn correct_inclination(&mut self, acc: Cvec3, factors: (f32, f32)) -> Option<Cvec3> {
         let p = self.params;
         let inertial = self.strapdown * acc;
-        let first = !self.initialized;
+        let first = !self.flags.get(Flags::INITIALIZED);
         if first {
             self.acc_average = inertial;
             self.acc_rate = Cvec3::ZERO;
-            self.initialized = true;
+            self.flags.set(Flags::INITIALIZED, true);
         }
         let (average, rate) = butterworth_step(self.acc_average, self.acc_rate, inertial, factors);
         let length = average.norm();
@@ -684,36 +737,80 @@ impl OrientationFilter {
 
     /// Turns the correction about the vertical towards magnetic north, if
     /// the field passes the disturbance gate. Returns the heading error it
-    /// saw (radians east of north), `None` if the field was not used.
-    fn correct_heading(&mut self, mag: Cvec3, dt: f32) -> Option<f32> {
+    /// saw (radians east of north), `None` if the field was not used. The
+    /// hard-iron estimate learns from the field if the sensor is `turning`
+    /// and the attitude `known`, and fades while it is not turning.
+    fn correct_heading(&mut self, mag: Cvec3, dt: f32, turning: bool, known: bool) -> Option<f32> {
         let p = self.params;
-        let field = self.attitude() * mag;
-        let horizontal = Cvec3::new(field.x, field.y, 0.0).norm();
-        // NaN, infinite or zero field, one without a horizontal part, or
-        // one so large that its rotation or length overflows.
-        if !(field.is_finite() && horizontal.is_finite() && horizontal > 0.0) {
-            return None;
-        }
-        let seen = Cvec3::new(horizontal, field.z, 0.0);
-        let reference = self.mag_reference;
+        let attitude = self.attitude();
+        let reference = self.mag_reference();
         let length = reference.norm();
+        // The hard-iron estimate is taken off while it is beyond the
+        // gate's radius (fully from twice that on): a smaller one lets the
+        // field pass the gate as it is, and is the calibration's residual
+        // error (a soft-iron or scale error, or a sensor-fixed field of a
+        // microtesla), which turns with the sensor and so averages out of
+        // the heading, where an estimate of it, wandering with the
+        // attitudes of the last `tau_mag` seconds, would not.
+        let strength = self.hard_iron.norm_squared();
+        let radius = p.mag_gate * length;
+        let least = if radius > 0.0 { radius } else { 0.0 };
+        let taken = if strength > 4.0 * least * least {
+            1.0
+        } else if strength > least * least {
+            float::sqrt(strength) / least - 1.0
+        } else {
+            0.0
+        };
+        let mut corrected = mag - self.hard_iron * taken;
+        let mut field = attitude * corrected;
+        let mut horizontal = horizontal_part(field);
+        if horizontal.is_none() {
+            // A reading that is usable as it is, but not once the estimate
+            // is taken off: the estimate has grown beyond any field (after
+            // huge glitches were taken for the reference), and starts over.
+            let raw = attitude * mag;
+            horizontal = horizontal_part(raw);
+            if horizontal.is_some() {
+                self.hard_iron = Cvec3::ZERO;
+                corrected = mag;
+                field = raw;
+            }
+        }
+        let horizontal = horizontal?;
+        let mut seen = Cvec3::new(horizontal, field.z, 0.0);
         // Finite: seen and reference are, and far below f32::MAX apart in
         // each component. Its norm may overflow to infinity.
         let offset = seen - reference;
         let distance = offset.norm();
-        let inside = distance <= p.mag_gate * length;
+        let inside = distance <= radius;
         // No reference yet, or one sample's that the next field disputes:
         // the field sets the heading at once and becomes the reference.
         let confirmed = self.mag_shut >= 0.0;
         let first = length == 0.0 || !(inside || confirmed);
+        let fraction = if first {
+            1.0
+        } else {
+            smoothing_factor(dt, min(p.tau_mag, self.settling))
+        };
         if first {
-            self.mag_reference = seen;
+            self.mag_reference = [seen.x, seen.y];
         } else if !inside && self.mag_shut >= MAG_REFERENCE_TAU {
             // The gate has been shut for MAG_REFERENCE_TAU: a new
             // environment, or a burst of identical glitches that confirmed
             // itself as the first fields. The field becomes the reference,
-            // and corrects the heading as any field that passes does.
-            self.mag_reference = seen;
+            // and corrects the heading as any field that passes does; the
+            // hard-iron estimate, part of the model that failed, starts
+            // over.
+            if self.hard_iron != Cvec3::ZERO {
+                let raw = attitude * mag;
+                if let Some(horizontal) = horizontal_part(raw) {
+                    self.hard_iron = Cvec3::ZERO;
+                    field = raw;
+                    seen = Cvec3::new(horizontal, field.z, 0.0);
+                }
+            }
+            self.mag_reference = [seen.x, seen.y];
             self.mag_shut = 0.0;
         } else {
             // The reference follows the field, but no faster than it would
@@ -727,7 +824,56 @@ impl OrientationFilter {
                 1.0
             };
             let alpha = smoothing_factor(dt, MAG_REFERENCE_TAU);
-            self.mag_reference = reference + offset * (alpha * pull);
+            let moved = reference + offset * (alpha * pull);
+            self.mag_reference = [moved.x, moved.y];
+            // The hard-iron estimate low-passes, in the sensor frame, the
+            // part of the reading's disagreement with the reference that no
+            // heading error explains: in the earth frame, the difference of
+            // the horizontal parts along the field's own horizontal
+            // direction, and of the vertical parts (a heading error turns
+            // the field about the vertical, which changes neither). A field
+            // fixed to the sensor (a magnet carried with it) stays put in
+            // that frame and is learned; one fixed to the earth (iron
+            // nearby) turns in it as the sensor turns, and averages out
+            // over the turns made within the heading correction's time
+            // constant, with which the estimate follows. While the filter
+            // settles, or the inclination is not known, the attitude is
+            // not to be trusted, and the estimate holds. While the sensor
+            // turns slower than `rest_gyro`, nothing tells the two apart
+            // (neither turns against the other): nothing confirms the
+            // estimate, and it fades as the reference renews, over
+            // `MAG_REFERENCE_TAU` (a magnet may have gone, or a wrong
+            // estimate been learned; a field that then fails the gate for
+            // that long renews the reference). Its step is clipped as the
+            // reference's: a single reading moves it by at most the
+            // fraction of the reference's length that the heading
+            // correction takes in one step.
+            if !turning {
+                self.hard_iron *= 1.0 - alpha;
+            } else if known {
+                // In the sensor frame: the corrected reading (the field
+                // rotated back) scaled along, and the vertical difference
+                // along up (the attitude matrix's third row).
+                let along = offset.x / horizontal;
+                let Quat { w, x, y, z } = attitude;
+                let up = Cvec3::new(
+                    2.0 * (x * z - w * y),
+                    2.0 * (y * z + w * x),
+                    1.0 - 2.0 * (x * x + y * y),
+                );
+                // The disagreement of the reading itself: the corrected
+                // field's, plus the part of the estimate taken off.
+                let step = corrected * along + up * (offset.y - field.z * along)
+                    - self.hard_iron * (1.0 - taken);
+                let estimate = self.hard_iron + step * (fraction * pull);
+                let limit = MAX_HARD_IRON * length;
+                let bound = limit * limit;
+                // NaN and infinity fail too (a bound that overflows holds
+                // the estimate).
+                if bound <= f32::MAX && estimate.norm_squared() <= bound {
+                    self.hard_iron = estimate;
+                }
+            }
             if !inside {
                 if confirmed {
                     // Finite, so that JSON holds it.
@@ -740,11 +886,6 @@ impl OrientationFilter {
         // The field's angle east of north; turning by it about +z brings
         // it to north.
         let error = float::atan2(field.x, field.y);
-        let fraction = if first {
-            1.0
-        } else {
-            smoothing_factor(dt, p.tau_mag.min(self.settling))
-        };
         let turn = Quat::from_rotation_z(error * fraction);
         self.correction = (turn * self.correction).normalize();
         Some(error)
@@ -767,7 +908,14 @@ impl OrientationFilter {
     #[inline]
     #[must_use]
     pub fn diagnostics(&self) -> Diagnostics {
-        self.diagnostics
+        self.flags.diagnostics(self.acc_error, self.mag_error)
+    }
+
+    /// The reference field in the earth frame as (horizontal, vertical, 0).
+    #[inline]
+    fn mag_reference(&self) -> Cvec3 {
+        let [horizontal, vertical] = self.mag_reference;
+        Cvec3::new(horizontal, vertical, 0.0)
     }
 }
 
@@ -796,10 +944,40 @@ fn plausible_specific_force(acc: Cvec3, dt: f32, p: &FilterParams) -> Option<Cve
     if !(length > 0.0 && length <= MAX_SPECIFIC_FORCE * p.gravity) {
         return None;
     }
-    let tau = p.tau_acc.max(0.0);
-    let impulse = (length - p.gravity).abs() * dt.min(tau);
+    let tau = max(p.tau_acc, 0.0);
+    let impulse = (length - p.gravity).abs() * min(dt, tau);
     let bound = p.acc_gate * p.gravity * tau * (0.5 / IMPULSE_PEAK);
     (impulse <= bound).then_some(acc)
+}
+
+/// The length of the horizontal part of `field` (earth frame), if the
+/// field can give a heading: finite, with a horizontal part, and neither
+/// its rotation nor its length overflowed.
+fn horizontal_part(field: Cvec3) -> Option<f32> {
+    let horizontal = Cvec3::new(field.x, field.y, 0.0).norm();
+    (field.is_finite() && horizontal.is_finite() && horizontal > 0.0).then_some(horizontal)
+}
+
+/// `a.min(b)` for operands that are not NaN, as one comparison: on the
+/// Cortex-M4F, `f32::min` is a library call (NaN-aware), ten times as many
+/// instructions.
+#[inline(always)]
+fn min(a: f32, b: f32) -> f32 {
+    if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+/// `a.max(b)` for operands that are not NaN, as [`min`].
+#[inline(always)]
+fn max(a: f32, b: f32) -> f32 {
+    if b > a {
+        b
+    } else {
+        a
+    }
 }
 
 /// The earth's x and y axes in the sensor frame: the first two rows of

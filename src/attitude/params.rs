@@ -27,7 +27,11 @@ pub struct FilterParams {
     /// Time constant of the heading correction by the magnetometer, in
     /// seconds (default 10 s). Indoor magnetic disturbances pass in seconds
     /// as the sensor moves, while a residual gyro bias of 0.1 °/s about the
-    /// vertical drifts only 1° in 10 s.
+    /// vertical drifts only 1° in 10 s. The hard-iron estimate (a field
+    /// fixed to the sensor, such as a magnet carried with it) follows with
+    /// the same time constant: over it, the fields of a disturbance fixed
+    /// to the earth turn in the sensor frame as the sensor moves, and
+    /// average out.
     pub tau_mag: f32,
     /// The shortest time constant, in seconds, with which the gyro bias
     /// follows the corrections during motion (default 20 s): the bias loop
@@ -102,7 +106,10 @@ pub struct FilterParams {
     /// constant, but no faster than it would follow a field its own length
     /// away, so that a single reading, however far off, barely moves it,
     /// while a new environment is accepted in the end (after 56 s for a
-    /// field 30 % stronger, 102 s for one twice as strong; tested).
+    /// field 30 % stronger, 102 s for one twice as strong; tested). The
+    /// filter's hard-iron estimate is taken off the measured field only
+    /// while it is longer than this fraction of the reference (in full
+    /// from twice that): a smaller one passes the gate anyway.
     pub mag_gate: f32,
     /// The gyro's full scale in rad/s (default `f32::MAX`: unknown, no
     /// saturation detected for finite readings; finite so that formats
