@@ -242,10 +242,7 @@ impl RigTForm {
     // two transforms and the result through memory and paid for a call,
     // whereas the same loop of `slerp` alone inlined it. One out-of-line
     // copy elsewhere (flash on a Cortex-M4F).
-    #[cfg_attr(
-        any(target_arch = "x86_64", target_arch = "aarch64"),
-        inline(always)
-    )]
+    #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline(always))]
     #[must_use]
     pub fn interpolate(self, other: Self, alpha: f32) -> Self {
         Self::new(self.t.lerp(other.t, alpha), self.r.slerp(other.r, alpha))
