@@ -244,10 +244,13 @@ impl RigTForm {
     /// assert!(mid.r.angle_to(Quat::from_rotation_z(PI / 4.0)) < 1e-6);
     /// ```
     #[doc(alias = "slerp")]
-    // Inlined across crates on 64-bit desktop targets, where the call
-    // costs as much as a share of the work; one out-of-line copy elsewhere
-    // (flash on a Cortex-M4F).
-    #[cfg_attr(desktop64, inline)]
+    // Always inlined on 64-bit desktop targets: with a plain `inline` hint
+    // the compiler inlined `slerp` into this function and then judged the
+    // whole too large to inline into callers' loops, which then passed the
+    // two transforms and the result through memory and paid for a call,
+    // whereas the same loop of `slerp` alone inlined it. One out-of-line
+    // copy elsewhere (flash on a Cortex-M4F).
+    #[cfg_attr(desktop64, inline(always))]
     #[must_use]
     pub fn interpolate(self, other: Self, alpha: f32) -> Self {
         Self::new(self.t.lerp(other.t, alpha), self.r.slerp(other.r, alpha))

@@ -10,6 +10,11 @@
 //! performance page's table (docs/performance.md) divides its median by
 //! 1,024.
 //!
+//! The two plain-loop benchmarks (`slerp, plain loop`, `RigTForm
+//! interpolate, plain loop`) time the single call as a user's loop calls it:
+//! over a `Vec` of pairs, a different `alpha` for each, the results stored
+//! in an output `Vec` (hidden behind `black_box` once per pass, not per call).
+//!
 //! The two slice benchmarks (`slerp slice`, `RigTForm interpolate slice`)
 //! time rigtform's slice APIs over all 1,024 pairs with one `alpha` against
 //! a loop of each peer's single call over the same pairs.
@@ -51,6 +56,32 @@ fn run<I: Copy + 'static, O>(
                 for &x in black_box(inputs) {
                     black_box(f(x));
                 }
+            })
+        });
+    };
+    jobs.push((op, Box::new(job)));
+}
+
+/// Adds the benchmark of `f` over every element of `inputs` written as a
+/// user writes it: a plain loop over the elements (each with its own
+/// `alpha`) that stores each result in an output slice of the same length,
+/// hidden behind `black_box` once after the loop rather than call by call.
+fn run_loop<I: Copy + 'static, O: Copy + 'static>(
+    jobs: &mut Vec<Job>,
+    op: &'static str,
+    library: &'static str,
+    inputs: &'static [I],
+    init: O,
+    f: impl Fn(I) -> O + 'static,
+) {
+    let job = move |c: &mut Criterion| {
+        let mut out = vec![init; inputs.len()];
+        group(c, op).bench_function(library, |b| {
+            b.iter(|| {
+                for (o, &x) in out.iter_mut().zip(black_box(inputs)) {
+                    *o = f(x);
+                }
+                black_box(&mut out);
             })
         });
     };
@@ -277,6 +308,22 @@ macro_rules! glam_benches {
             &p.tfa,
             |((t1, r1), (t2, r2), a)| (t1.lerp(t2, a), r1.slerp(r2, a)),
         );
+        run_loop(
+            $c,
+            "slerp, plain loop",
+            name,
+            &p.qqa,
+            $glam::Quat::IDENTITY,
+            |(a, b, t)| a.slerp(b, t),
+        );
+        run_loop(
+            $c,
+            "RigTForm interpolate, plain loop",
+            name,
+            &p.tfa,
+            ($glam::Vec3::ZERO, $glam::Quat::IDENTITY),
+            |((t1, r1), (t2, r2), a)| (t1.lerp(t2, a), r1.slerp(r2, a)),
+        );
         run_slice(
             $c,
             "slerp slice",
@@ -370,6 +417,22 @@ fn quat_ops(c: &mut Criterion) {
         run(jobs, "RigTForm interpolate", name, &p.tfa, |(a, b, t)| {
             a.interpolate(b, t)
         });
+        run_loop(
+            jobs,
+            "slerp, plain loop",
+            name,
+            &p.qqa,
+            Quat::IDENTITY,
+            |(a, b, t)| a.slerp(b, t),
+        );
+        run_loop(
+            jobs,
+            "RigTForm interpolate, plain loop",
+            name,
+            &p.tfa,
+            RigTForm::IDENTITY,
+            |(a, b, t)| a.interpolate(b, t),
+        );
         run_slice(
             jobs,
             "slerp slice",
@@ -401,7 +464,7 @@ fn quat_ops(c: &mut Criterion) {
 /// The operations, in the order they are run and tabulated (`cargo xtask
 /// perf-report` takes the performance page's rows in the order `--list` prints
 /// them).
-const OPS: [&str; 21] = [
+const OPS: [&str; 23] = [
     "q*q",
     "q*q renormalized",
     "rotate Cvec3",
@@ -419,6 +482,8 @@ const OPS: [&str; 21] = [
     "RigTForm inv",
     "RigTForm * point",
     "RigTForm interpolate",
+    "slerp, plain loop",
+    "RigTForm interpolate, plain loop",
     "slerp slice",
     "RigTForm interpolate slice",
     "Matrix4 from RigTForm",
@@ -471,6 +536,22 @@ fn peers(jobs: &mut Vec<Job>, inp: &Inputs) {
         run(jobs, "RigTForm interpolate", name, &p.tfa, |(a, b, t)| {
             a.lerp_slerp(&b, t)
         });
+        run_loop(
+            jobs,
+            "slerp, plain loop",
+            name,
+            &p.qqa,
+            nalgebra::UnitQuaternion::identity(),
+            |(a, b, t)| a.slerp(&b, t),
+        );
+        run_loop(
+            jobs,
+            "RigTForm interpolate, plain loop",
+            name,
+            &p.tfa,
+            nalgebra::Isometry3::identity(),
+            |(a, b, t)| a.lerp_slerp(&b, t),
+        );
         run_slice(
             jobs,
             "slerp slice",

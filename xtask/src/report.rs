@@ -34,6 +34,7 @@ pub fn perf_report(draws: u64) -> Result<()> {
     page::splice(&page_text, page::ATTITUDE, "")?;
 
     let host = host_table()?;
+    let avx2 = avx2_table()?;
     say("Cortex-M4F: instruction counts, then the flash builds");
     let ops = m4f::with_flash(m4f::counts(None)?, None)?;
     let inputs = m4f::inputs(&ops)?;
@@ -59,6 +60,9 @@ pub fn perf_report(draws: u64) -> Result<()> {
           pre-generated inputs for every library) on a shared machine, where other\n\
           builds ran at the same time: compare within a row, not between runs.\n\n";
     s += &host;
+    s += "\nThe single calls and their plain loops again, built for AVX2 (`-C\n\
+          target-cpu=x86-64-v3`), in a separate run right after:\n\n";
+    s += &avx2;
     s += "\nCortex-M4F (QEMU `mps2-an386`, `thumbv7em-none-eabihf`): instructions\n";
     writeln!(
         s,
@@ -99,6 +103,39 @@ fn host_table() -> Result<String> {
     ));
     let listed = criterion::listed(&tools::stdout_of(&mut bench(&["--list"]))?);
     tools::run(&mut bench(&[]))?;
+    criterion::host_table(&listed, &criterion::read_all(&results)?)
+}
+
+/// The benchmarks that `avx2_table` runs again: the single calls and their
+/// plain loops.
+const AVX2_FILTER: &str =
+    "^(slerp|slerp, plain loop|RigTForm interpolate|RigTForm interpolate, plain loop)/";
+
+/// The rows of [`AVX2_FILTER`] built with `-C target-cpu=x86-64-v3` (in a
+/// target directory of their own, so that the default build is kept) and
+/// run after the default ones; the table as [`host_table`]'s.
+fn avx2_table() -> Result<String> {
+    let target = target_directory()?;
+    let results = target.join("criterion-x86-64-v3");
+    if results.exists() {
+        say(format!("removing the old results in {}", results.display()));
+        std::fs::remove_dir_all(&results)?;
+    }
+    let bench = |args: &[&str]| {
+        let mut cmd = tools::cargo();
+        cmd.current_dir(tools::root())
+            .env("RUSTFLAGS", "-C target-cpu=x86-64-v3")
+            .env("CRITERION_HOME", &results)
+            .args(["bench", "-p", COMPARE, "--bench", BENCH, "--target-dir"])
+            .arg(target.join("x86-64-v3"));
+        cmd.arg("--").args(args);
+        cmd
+    };
+    say(format!(
+        "host, AVX2: cargo bench -p {COMPARE} --bench {BENCH} -- '{AVX2_FILTER}'"
+    ));
+    let listed = criterion::listed(&tools::stdout_of(&mut bench(&["--list", AVX2_FILTER]))?);
+    tools::run(&mut bench(&[AVX2_FILTER]))?;
     criterion::host_table(&listed, &criterion::read_all(&results)?)
 }
 
