@@ -114,8 +114,11 @@ pub const ATAN_POLY_MAX_ULP: f32 = 1.0; // 0.821 at 0.5461395
 /// The sine and cosine polynomials inside the sine and cosine kernel, in
 /// ulps, on [0, pi/4].
 ///
-/// Known: swept: every f32 of [0, pi/4] (`exhaustive_kernel_sweep`). Not yet
-/// proven, for the reason of [`ATAN_POLY_MAX_ULP`].
+/// Known: swept: every f32 of [0, pi/4] (`exhaustive_kernel_sweep`).
+/// `proofs/gappa/cos_poly.g` proves 0.834 ulp for the cosine polynomial
+/// (with Sollya's bound of its approximation error, `cos_poly.sollya`); the
+/// sine polynomial is not yet proven, for the reason of
+/// [`ATAN_POLY_MAX_ULP`].
 pub const SIN_COS_POLY_MAX_ULP: f32 = 1.0; // sin 0.805 at 0.7828049, cos 0.749 at 0.7086515
 /// The sine and cosine kernel, in ulps, on [-3 pi/4, 3 pi/4]: every angle
 /// `slerp` hands it for `alpha` in [0, 1].
@@ -170,8 +173,10 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.2e-7; // 1.723e-7
 /// for an f32 unit quaternion is 1 only up to its rounding.
 ///
 /// Known: measured. For products, `proofs/gappa/mul.g` proves 7.16e-7 (for
-/// inputs within 2^-20 of unit norm, against `|a| |b|`): looser (the error
-/// vector's length bounds the norm's error). The largest over random draws is 2.572e-7; a search over inputs
+/// inputs within 2^-20 of unit norm, against `|a| |b|`), and for `pow`,
+/// `proofs/gappa/pow_norm.g` proves 5.51e-7 given the sine and cosine
+/// kernel's swept 1.25 ulp: both looser (the error vector's length bounds
+/// the norm's error). `slerp` and `from_axis_angle` have no model. The largest over random draws is 2.572e-7; a search over inputs
 /// found two results of `normalize` (each about 1.1e-7 from unit norm) whose
 /// product is 3.2255e-7 from unit norm (`docs/verification-proofs.md`), which
 /// this value covers.
