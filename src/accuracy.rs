@@ -115,10 +115,12 @@ pub const ATAN_POLY_MAX_ULP: f32 = 1.0; // 0.821 at 0.5461395
 /// ulps, on [0, pi/4].
 ///
 /// Known: swept: every f32 of [0, pi/4] (`exhaustive_kernel_sweep`).
-/// `proofs/gappa/cos_poly.g` proves 0.834 ulp for the cosine polynomial
-/// (with Sollya's bound of its approximation error, `cos_poly.sollya`); the
-/// sine polynomial is not yet proven, for the reason of
-/// [`ATAN_POLY_MAX_ULP`].
+/// `proofs/gappa/cos_poly.g` proves 0.834 ulp for the cosine polynomial on
+/// all of it, and `sin_poly_hi.g`, `sin_poly_mid.g` and `sin_poly_low.g`
+/// 0.85 ulp for the sine polynomial on [2^-9, pi/4] (with Sollya's bounds of
+/// the approximation errors, `cos_poly.sollya`, `sin_poly.sollya`); below
+/// 2^-9 the sine has no model (one per binade would be needed, for the
+/// reason of [`ATAN_POLY_MAX_ULP`]).
 pub const SIN_COS_POLY_MAX_ULP: f32 = 1.0; // sin 0.805 at 0.7828049, cos 0.749 at 0.7086515
 /// The sine and cosine kernel, in ulps, on [-3 pi/4, 3 pi/4]: every angle
 /// `slerp` hands it for `alpha` in [0, 1].

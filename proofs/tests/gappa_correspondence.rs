@@ -589,6 +589,37 @@ fn cosine_polynomial_is_cos_poly_g() {
     }
 }
 
+/// sin_poly_hi.g, sin_poly_mid.g and sin_poly_low.g (one computation, its
+/// binades split among three models): the kernel's sine for every argument
+/// in [0, pi/4], where it is the polynomial with the tail 0.
+#[test]
+fn sine_polynomial_is_sin_poly_g() {
+    let quarter = core::f32::consts::FRAC_PI_4;
+    for name in ["sin_poly_hi", "sin_poly_mid", "sin_poly_low"] {
+        let m = model(name);
+        assert_eq!(m.inputs, ["r"]);
+        let mut d = Draws::new(19);
+        let ends = [
+            0.0,
+            f32::from_bits(1),
+            f32::MIN_POSITIVE,
+            2f32.powi(-9),
+            quarter,
+        ];
+        let drawn = (0..DRAWS / 2).map(|i| {
+            if i % 2 == 0 {
+                d.uniform(0.0, quarter)
+            } else {
+                f32::from_bits(d.next_u32() % (quarter.to_bits() + 1))
+            }
+        });
+        for r in ends.into_iter().chain(drawn) {
+            let out = m.run(&[f64::from(r)]);
+            check(&m, &out, "y", kani_kernels::sin_cos(r).0, &[r]);
+        }
+    }
+}
+
 #[test]
 fn square_root_is_sqrt_g() {
     let m = model("sqrt");
