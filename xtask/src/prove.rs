@@ -2,7 +2,8 @@
 //!
 //! Every model of `proofs/gappa/` (`*.g`) is run through Gappa, which
 //! writes its proof as a Coq script (`gappa -Bcoq`), and `coqc` checks the
-//! script against Flocq and Gappa's Coq library. A model's Sollya scripts
+//! script against Flocq and Gappa's Coq library, as many models at once as
+//! there are cores. A model's Sollya scripts
 //! (`#! sollya FILE HYPOTHESIS`) bound a polynomial's approximation error
 //! (`supnorm`), which must not exceed the hypothesis the Gappa model takes
 //! it as. Then the correspondence test
@@ -43,6 +44,8 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::process::Command;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use anyhow::{bail, Context, Result};
@@ -311,6 +314,41 @@ fn constants(text: &str) -> Result<Vec<Constant>> {
     Ok(out)
 }
 
+/// Runs [`prove`] on every model, as many at once as there are cores
+/// (Coq checks one certificate per process, so this is where the time
+/// goes), and returns the results in the models' order, or the first
+/// model's error in that order.
+fn prove_in_parallel(models: &[std::path::PathBuf], work: &Path) -> Result<Vec<Proven>> {
+    let jobs = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .clamp(1, models.len().max(1));
+    let next = AtomicUsize::new(0);
+    let results: Vec<Mutex<Option<Result<Proven>>>> =
+        models.iter().map(|_| Mutex::new(None)).collect();
+    std::thread::scope(|scope| {
+        for _ in 0..jobs {
+            scope.spawn(|| loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(model) = models.get(i) else { break };
+                let result = prove(model, work);
+                if let Ok(mut slot) = results[i].lock() {
+                    *slot = Some(result);
+                }
+            });
+        }
+    });
+    results
+        .into_iter()
+        .zip(models)
+        .map(|(slot, model)| {
+            slot.into_inner()
+                .ok()
+                .flatten()
+                .unwrap_or_else(|| bail!("{}: no result", model.display()))
+        })
+        .collect()
+}
+
 /// What a model's claims rest on beyond its certificate.
 fn given(p: &Proven) -> &'static str {
     if p.unchecked {
@@ -334,10 +372,7 @@ pub fn prove_all() -> Result<()> {
         bail!("no models in {}", dir.display());
     }
     let work = tempfile::tempdir().context("a directory for the certificates")?;
-    let mut proven = Vec::new();
-    for model in &models {
-        proven.push(prove(model, work.path())?);
-    }
+    let proven = prove_in_parallel(&models, work.path())?;
 
     say("the correspondence of models and code (cargo test -p rigtform-proofs --test gappa_correspondence)");
     let test = cargo()
