@@ -44,7 +44,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::process::Command;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
@@ -317,20 +317,29 @@ fn constants(text: &str) -> Result<Vec<Constant>> {
 /// Runs [`prove`] on every model, as many at once as there are cores
 /// (Coq checks one certificate per process, so this is where the time
 /// goes), and returns the results in the models' order, or the first
-/// model's error in that order.
+/// model's error in that order. After a failure no further model starts.
 fn prove_in_parallel(models: &[std::path::PathBuf], work: &Path) -> Result<Vec<Proven>> {
     let jobs = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
         .clamp(1, models.len().max(1));
     let next = AtomicUsize::new(0);
+    let failed = AtomicBool::new(false);
     let results: Vec<Mutex<Option<Result<Proven>>>> =
         models.iter().map(|_| Mutex::new(None)).collect();
     std::thread::scope(|scope| {
         for _ in 0..jobs {
             scope.spawn(|| loop {
+                if failed.load(Ordering::Relaxed) {
+                    break;
+                }
+                // Models start in order, so every model before a failed one
+                // has started and finishes.
                 let i = next.fetch_add(1, Ordering::Relaxed);
                 let Some(model) = models.get(i) else { break };
                 let result = prove(model, work);
+                if result.is_err() {
+                    failed.store(true, Ordering::Relaxed);
+                }
                 if let Ok(mut slot) = results[i].lock() {
                     *slot = Some(result);
                 }
