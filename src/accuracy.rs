@@ -176,9 +176,10 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.2e-7; // 1.723e-7
 ///
 /// Known: measured. For products, `proofs/gappa/mul.g` proves 7.16e-7 (for
 /// inputs within 2^-20 of unit norm, against `|a| |b|`), and for `pow`,
-/// `proofs/gappa/pow_norm.g` proves 5.51e-7 given the sine and cosine
+/// `proofs/gappa/pow_norm.g` proves 6.56e-7 given the sine and cosine
 /// kernel's swept 1.25 ulp: both looser (the error vector's length bounds
-/// the norm's error). `slerp` and `from_axis_angle` have no model. The largest over random draws is 2.572e-7; a search over inputs
+/// the norm's error). `slerp` and `from_axis_angle` have no model. The
+/// largest over random draws is 2.572e-7; a search over inputs
 /// found two results of `normalize` (each about 1.1e-7 from unit norm) whose
 /// product is 3.2255e-7 from unit norm (`docs/verification-proofs.md`), which
 /// this value covers.
