@@ -114,8 +114,13 @@ pub const ATAN_POLY_MAX_ULP: f32 = 1.0; // 0.821 at 0.5461395
 /// The sine and cosine polynomials inside the sine and cosine kernel, in
 /// ulps, on [0, pi/4].
 ///
-/// Known: swept: every f32 of [0, pi/4] (`exhaustive_kernel_sweep`). Not yet
-/// proven, for the reason of [`ATAN_POLY_MAX_ULP`].
+/// Known: swept: every f32 of [0, pi/4] (`exhaustive_kernel_sweep`).
+/// `proofs/gappa/cos_poly.g` proves 0.834 ulp for the cosine polynomial on
+/// all of it, and `sin_poly_hi.g`, `sin_poly_mid.g` and `sin_poly_low.g`
+/// 0.85 ulp for the sine polynomial on [2^-9, pi/4] (with Sollya's bounds of
+/// the approximation errors, `cos_poly.sollya`, `sin_poly.sollya`); below
+/// 2^-9 the sine has no model (one per binade would be needed, for the
+/// reason of [`ATAN_POLY_MAX_ULP`]).
 pub const SIN_COS_POLY_MAX_ULP: f32 = 1.0; // sin 0.805 at 0.7828049, cos 0.749 at 0.7086515
 /// The sine and cosine kernel, in ulps, on [-3 pi/4, 3 pi/4]: every angle
 /// `slerp` hands it for `alpha` in [0, 1].
@@ -159,7 +164,7 @@ pub const TAN_MAX_REL_ERROR: f32 = backend::TAN_MAX_REL_ERROR;
 /// `|norm - 1|` after `normalize`, `nlerp` or `blend`, for any finite non-zero
 /// input, subnormal to `f32::MAX`.
 ///
-/// Known: measured. `proofs/gappa/normalize.g` proves 8.05e-7 (and
+/// Known: measured. `proofs/gappa/normalize.g` proves 3.88e-7 (and
 /// `normalize_scale.g` that the rescaled branches scale exactly or within
 /// 2^-150): looser, since interval arithmetic bounds each component's rounding
 /// separately where the errors partly cancel.
@@ -169,9 +174,12 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.2e-7; // 1.723e-7
 /// relative to the norm of its first input (`| |r| / |a| - 1 |`), which
 /// for an f32 unit quaternion is 1 only up to its rounding.
 ///
-/// Known: measured. For products, `proofs/gappa/mul.g` proves 8.35e-7: looser
-/// (the error vector's length bounds the norm's error); `pow` and `slerp` have
-/// no model. The largest over random draws is 2.572e-7; a search over inputs
+/// Known: measured. For products, `proofs/gappa/mul.g` proves 7.16e-7 (for
+/// inputs within 2^-20 of unit norm, against `|a| |b|`), and for `pow`,
+/// `proofs/gappa/pow_norm.g` proves 6.56e-7 given the sine and cosine
+/// kernel's swept 1.25 ulp: both looser (the error vector's length bounds
+/// the norm's error). `slerp` and `from_axis_angle` have no model. The
+/// largest over random draws is 2.572e-7; a search over inputs
 /// found two results of `normalize` (each about 1.1e-7 from unit norm) whose
 /// product is 3.2255e-7 from unit norm (`docs/verification-proofs.md`), which
 /// this value covers.
@@ -239,9 +247,9 @@ pub const DETERMINANT_MAX_REL_ERROR: f32 = 5.3e-7; // 4.176e-7
 pub const MUL_MAX_ANGLE_ERROR: f32 = 3.8e-7; // 2.988e-7
 /// Error of `q * v` (rotating a vector by a unit quaternion), relative to `|v|`.
 ///
-/// Known: measured. `proofs/gappa/rotate.g` proves 7.03e-6: looser, since
-/// interval arithmetic does not know that the intermediate `t = 2 u x v` is
-/// bounded by `2 |v|`.
+/// Known: measured. `proofs/gappa/rotate.g` proves 3.8e-6: looser, since
+/// interval arithmetic bounds each component of `v + t w` by the sum of the
+/// parts' bounds where `v` and `t = 2 u x v` are orthogonal.
 pub const ROTATE_MAX_REL_ERROR: f32 = 6.0e-7; // 4.710e-7
 /// Angle error of `q.pow(alpha)` for unit `q`, per radian of the rotation
 /// it returns and never less than this many radians: the error is at most

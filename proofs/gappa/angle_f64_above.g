@@ -60,7 +60,7 @@ E = (a - At) / At;
 (a - At) / At -> (a - A) / A + (A - At) / At + ((a - A) / A) * ((A - At) / At);
 (a - A) / A -> ((a - (u + Q)) / (u + Q) + 1) * ((u - sqrt(Z)) / sqrt(Z) + 1) * ((r - R) / R + 1) - 1;
 (r - R) / R -> (z * p - Z * P) / R;
-(u - sqrt(Z)) / sqrt(Z) -> ((u - sqrt(zf)) / sqrt(zf) + 1) * (sqrt(zf / Z)) - 1;
+(u - sqrt(Z)) / sqrt(Z) -> ((u - sqrt(zf)) / sqrt(zf) + 1) * ((sqrt(zf) - sqrt(Z)) / sqrt(Z) + 1) - 1;
 zf / Z -> ((zf - z) / z + 1) * ((z - Z) / Z + 1);
 x * x -> Z * w;
 (a - (u + Q)) / (u + Q) -> (a - (u + n)) / (u + n) * (1 + (n - Q) / (u + Q)) + (n - Q) / (u + Q);

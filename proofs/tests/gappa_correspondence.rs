@@ -508,6 +508,115 @@ fn rig_tform_inverse_identities_are_rigtform_inv_g() {
     }
 }
 
+/// pow_norm.g where `scale_for_squares` leaves the vector part as it is
+/// (its sum of squares in [2^-100, f32::MAX]; the other branches are
+/// normalize_scale.g's) and `|alpha| <= f32::MAX / 4`. The model takes the
+/// kernel's sine and cosine as inputs; the glue that makes them (the angle
+/// `atan2(beta, w)`, the f32 product `alpha phi`, `sin_cos`) is pow's,
+/// written out here with the library's kernels, and the result's bits are
+/// the library's `pow`.
+#[test]
+fn power_is_pow_norm_g() {
+    let m = model("pow_norm");
+    assert_eq!(m.inputs, ["x", "y", "z", "s", "c"]);
+    let mut kept = 0;
+    for (i, mut d) in draws() {
+        let q = if i % 2 == 0 {
+            d.unit_quat()
+        } else {
+            quat(core::array::from_fn(|_| component(&mut d)))
+        };
+        let alpha = match i % 5 {
+            0 => d.f32_mixed(),
+            1 => d.uniform(-1e6, 1e6),
+            _ => d.uniform(-4.0, 4.0),
+        };
+        if !(q.is_finite() && alpha.is_finite()) || alpha.abs() > f32::MAX / 4.0 {
+            continue;
+        }
+        let inputs = [q.x, q.y, q.z, 0.0, 0.0].map(f64::from);
+        let beta_sq = m.run(&inputs)["q"];
+        if !(2f64.powi(-100)..=f64::from(f32::MAX)).contains(&beta_sq) {
+            continue;
+        }
+        let beta = kani_kernels::sqrt(beta_sq as f32);
+        let phi = kani_kernels::atan2(beta, q.w * 1.0);
+        let (s, c) = kani_kernels::sin_cos(alpha * phi);
+        let v = [q.x, q.y, q.z, s, c];
+        let out = m.run(&v.map(f64::from));
+        let p = q.pow(alpha);
+        assert_eq!(p.w.to_bits(), c.to_bits(), "pow_norm: w for {q:?}, {alpha}");
+        for (name, code) in [("rx", p.x), ("ry", p.y), ("rz", p.z)] {
+            check(&m, &out, name, code, &v);
+        }
+        kept += 1;
+    }
+    assert!(
+        kept > DRAWS / 2,
+        "{kept} of {DRAWS} draws in the model's branch"
+    );
+}
+
+/// cos_poly.g: the kernel's cosine for every argument in [0, pi/4], where
+/// it is the polynomial with the tail 0 (random arguments, raw bit
+/// patterns of the range, and its ends).
+#[test]
+fn cosine_polynomial_is_cos_poly_g() {
+    let m = model("cos_poly");
+    assert_eq!(m.inputs, ["r", "t"]);
+    let quarter = core::f32::consts::FRAC_PI_4;
+    let mut d = Draws::new(17);
+    let ends = [
+        0.0,
+        f32::from_bits(1),
+        f32::MIN_POSITIVE,
+        2f32.powi(-12),
+        quarter,
+    ];
+    let drawn = (0..DRAWS).map(|i| {
+        if i % 2 == 0 {
+            d.uniform(0.0, quarter)
+        } else {
+            f32::from_bits(d.next_u32() % (quarter.to_bits() + 1))
+        }
+    });
+    for r in ends.into_iter().chain(drawn) {
+        let out = m.run(&[f64::from(r), 0.0]);
+        check(&m, &out, "y", kani_kernels::sin_cos(r).1, &[r, 0.0]);
+    }
+}
+
+/// sin_poly_hi.g, sin_poly_mid.g and sin_poly_low.g (one computation, its
+/// binades split among three models): the kernel's sine for every argument
+/// in [0, pi/4], where it is the polynomial with the tail 0.
+#[test]
+fn sine_polynomial_is_sin_poly_g() {
+    let quarter = core::f32::consts::FRAC_PI_4;
+    for name in ["sin_poly_hi", "sin_poly_mid", "sin_poly_low"] {
+        let m = model(name);
+        assert_eq!(m.inputs, ["r"]);
+        let mut d = Draws::new(19);
+        let ends = [
+            0.0,
+            f32::from_bits(1),
+            f32::MIN_POSITIVE,
+            2f32.powi(-9),
+            quarter,
+        ];
+        let drawn = (0..DRAWS / 2).map(|i| {
+            if i % 2 == 0 {
+                d.uniform(0.0, quarter)
+            } else {
+                f32::from_bits(d.next_u32() % (quarter.to_bits() + 1))
+            }
+        });
+        for r in ends.into_iter().chain(drawn) {
+            let out = m.run(&[f64::from(r)]);
+            check(&m, &out, "y", kani_kernels::sin_cos(r).0, &[r]);
+        }
+    }
+}
+
 #[test]
 fn square_root_is_sqrt_g() {
     let m = model("sqrt");

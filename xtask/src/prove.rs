@@ -2,7 +2,8 @@
 //!
 //! Every model of `proofs/gappa/` (`*.g`) is run through Gappa, which
 //! writes its proof as a Coq script (`gappa -Bcoq`), and `coqc` checks the
-//! script against Flocq and Gappa's Coq library. A model's Sollya scripts
+//! script against Flocq and Gappa's Coq library, as many models at once as
+//! there are cores. A model's Sollya scripts
 //! (`#! sollya FILE HYPOTHESIS`) bound a polynomial's approximation error
 //! (`supnorm`), which must not exceed the hypothesis the Gappa model takes
 //! it as. Then the correspondence test
@@ -23,6 +24,13 @@
 //! `VALUE` must be the upper end of one of the model's goals, written the
 //! same way (`, VALUE]`), so that the certificate proves that very number.
 //!
+//! A model's rewriting hints (`a -> b;`) enter its certificate as
+//! hypotheses: Coq checks the proof given them, and Gappa checks that each
+//! is an identity of the reals. Where Gappa cannot (its warning "not
+//! trivially equal"), a `bound` claim fails, and the model's looser bounds
+//! and laws are printed as given that hint. A certificate that names a rule
+//! Gappa has no Coq proof for (`UNKNOWN_...`) fails.
+//!
 //! Each constant's doc comment in `src/accuracy.rs` says how it is known, in
 //! a line `Known: proven ...`, `Known: swept ...` (every f32 of its domain,
 //! by an exhaustive test) or `Known: measured ...`. This fails when a
@@ -36,6 +44,8 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 use std::process::Command;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use anyhow::{bail, Context, Result};
@@ -57,6 +67,9 @@ struct Proven {
     model: String,
     claims: Vec<Claim>,
     time: Duration,
+    /// Whether some rewriting hint was not checked by Gappa (and so is a
+    /// hypothesis of the model's laws and looser bounds).
+    unchecked: bool,
 }
 
 /// How `src/accuracy.rs` says a constant is known.
@@ -184,9 +197,18 @@ fn prove(path: &Path, work: &Path) -> Result<Proven> {
             .join("\n");
         bail!("gappa did not prove {}:\n{error}", path.display());
     }
+    // A rewriting hint enters the certificate as a hypothesis; Gappa checks
+    // that it is an identity of the reals, and says so where it cannot.
+    let unchecked = unchecked_hints(&messages);
+    if !unchecked.is_empty() && claims.iter().any(|c| c.kind == "bound") {
+        bail!(
+            "{stem}: claims a bound, but Gappa could not check these hints (they would be hypotheses of the proof):\n{}",
+            unchecked.join("\n")
+        );
+    }
     let script = String::from_utf8(gappa.stdout).context("gappa's certificate")?;
-    if script.contains("Admitted") || script.contains("Axiom") {
-        bail!("{stem}: the certificate admits something");
+    if script.contains("Admitted") || script.contains("Axiom") || script.contains("UNKNOWN") {
+        bail!("{stem}: the certificate admits something, or uses a rule without a Coq proof");
     }
     let v = work.join(format!("{stem}.v"));
     std::fs::write(&v, &script).with_context(|| format!("{}", v.display()))?;
@@ -198,11 +220,27 @@ fn prove(path: &Path, work: &Path) -> Result<Proven> {
         script.lines().count(),
         time.as_secs_f64()
     ));
+    for hint in &unchecked {
+        say(format!(
+            "{stem}.g: a hint Gappa could not check, a hypothesis of its laws: {hint}"
+        ));
+    }
     Ok(Proven {
         model: format!("{stem}.g"),
         claims,
         time,
+        unchecked: !unchecked.is_empty(),
     })
+}
+
+/// The rewriting hints Gappa could not verify as identities (its warning
+/// `A and B are not trivially equal`), one line each.
+fn unchecked_hints(messages: &str) -> Vec<String> {
+    messages
+        .lines()
+        .filter(|l| l.contains("are not trivially equal"))
+        .map(|l| l.trim_start_matches("Warning: ").trim().to_owned())
+        .collect()
 }
 
 /// The constants of `src/accuracy.rs` (the default backend's values) and
@@ -276,6 +314,59 @@ fn constants(text: &str) -> Result<Vec<Constant>> {
     Ok(out)
 }
 
+/// Runs [`prove`] on every model, as many at once as there are cores
+/// (Coq checks one certificate per process, so this is where the time
+/// goes), and returns the results in the models' order, or the first
+/// model's error in that order. After a failure no further model starts.
+fn prove_in_parallel(models: &[std::path::PathBuf], work: &Path) -> Result<Vec<Proven>> {
+    let jobs = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .clamp(1, models.len().max(1));
+    let next = AtomicUsize::new(0);
+    let failed = AtomicBool::new(false);
+    let results: Vec<Mutex<Option<Result<Proven>>>> =
+        models.iter().map(|_| Mutex::new(None)).collect();
+    std::thread::scope(|scope| {
+        for _ in 0..jobs {
+            scope.spawn(|| loop {
+                if failed.load(Ordering::Relaxed) {
+                    break;
+                }
+                // Models start in order, so every model before a failed one
+                // has started and finishes.
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(model) = models.get(i) else { break };
+                let result = prove(model, work);
+                if result.is_err() {
+                    failed.store(true, Ordering::Relaxed);
+                }
+                if let Ok(mut slot) = results[i].lock() {
+                    *slot = Some(result);
+                }
+            });
+        }
+    });
+    results
+        .into_iter()
+        .zip(models)
+        .map(|(slot, model)| {
+            slot.into_inner()
+                .ok()
+                .flatten()
+                .unwrap_or_else(|| bail!("{}: no result", model.display()))
+        })
+        .collect()
+}
+
+/// What a model's claims rest on beyond its certificate.
+fn given(p: &Proven) -> &'static str {
+    if p.unchecked {
+        " (given a hint Gappa could not check)"
+    } else {
+        ""
+    }
+}
+
 /// Runs everything; prints one line per constant and the count.
 pub fn prove_all() -> Result<()> {
     let root = root();
@@ -290,10 +381,7 @@ pub fn prove_all() -> Result<()> {
         bail!("no models in {}", dir.display());
     }
     let work = tempfile::tempdir().context("a directory for the certificates")?;
-    let mut proven = Vec::new();
-    for model in &models {
-        proven.push(prove(model, work.path())?);
-    }
+    let proven = prove_in_parallel(&models, work.path())?;
 
     say("the correspondence of models and code (cargo test -p rigtform-proofs --test gappa_correspondence)");
     let test = cargo()
@@ -356,7 +444,17 @@ pub fn prove_all() -> Result<()> {
             .iter()
             .copied()
             .max_by(|a, b| a.1.value.total_cmp(&b.1.value));
-        let looser = claims.iter().find(|(_, cl)| cl.kind == "looser");
+        // Several models may each prove a looser bound for one of the
+        // constant's operations: the table shows the largest (what holds
+        // for all of them) and names every model.
+        let loosers: Vec<_> = claims
+            .iter()
+            .filter(|(_, cl)| cl.kind == "looser")
+            .collect();
+        let looser = loosers
+            .iter()
+            .copied()
+            .max_by(|a, b| a.1.value.total_cmp(&b.1.value));
         match c.known.as_str() {
             "proven" => {
                 p += 1;
@@ -405,10 +503,20 @@ pub fn prove_all() -> Result<()> {
                         .sum::<f64>()
                 ),
             ),
-            (None, Some((pr, cl))) => (
+            (None, Some((_, cl))) => (
                 format!("{:.3e}*", cl.value),
-                pr.model.clone(),
-                format!("{:.1} s", pr.time.as_secs_f64()),
+                loosers
+                    .iter()
+                    .map(|(pr, _)| pr.model.as_str())
+                    .collect::<Vec<_>>()
+                    .join("+"),
+                format!(
+                    "{:.1} s",
+                    loosers
+                        .iter()
+                        .map(|(pr, _)| pr.time.as_secs_f64())
+                        .sum::<f64>()
+                ),
             ),
             (None, None) => ("-".into(), "-".into(), "-".into()),
         };
@@ -419,12 +527,32 @@ pub fn prove_all() -> Result<()> {
         );
     }
     println!("{table}");
-    println!("* a proven bound on part of the constant's domain or above it; the constant itself is swept or measured");
+    println!("* a proven bound on part of the constant's domain or above it (with several models, the largest); the constant itself is swept or measured");
+    println!();
+    println!("looser bounds, per model:");
+    for pr in &proven {
+        for cl in pr.claims.iter().filter(|c| c.kind == "looser") {
+            println!(
+                "  {:<19} {:.3e}  {}: {}{}",
+                pr.model,
+                cl.value,
+                cl.name,
+                cl.text,
+                given(pr)
+            );
+        }
+    }
     println!();
     println!("laws proven without a constant:");
     for pr in &proven {
         for cl in pr.claims.iter().filter(|c| c.kind == "law") {
-            println!("  {:<19} {:.3e}  {}", pr.model, cl.value, cl.text);
+            println!(
+                "  {:<19} {:.3e}  {}{}",
+                pr.model,
+                cl.value,
+                cl.text,
+                given(pr)
+            );
         }
     }
     println!();
@@ -454,6 +582,16 @@ mod tests {
         assert_eq!((c[0].name.as_str(), c[0].value), ("A", 0.125));
         let wrong = "#! bound A 1b-4 what\n{ x in [0, 1] -> y in [0, 1b-3] }";
         assert!(claims(Path::new("m.g"), wrong).is_err());
+    }
+
+    #[test]
+    fn hints_gappa_could_not_check_are_found() {
+        let messages = "Warning: no need for the rewriting at line 3\nWarning: a and b * c are not trivially equal.\n         Difference: a - b * c\n";
+        assert_eq!(
+            unchecked_hints(messages),
+            ["a and b * c are not trivially equal."]
+        );
+        assert!(unchecked_hints("Warning: no need for the rewriting").is_empty());
     }
 
     #[test]
