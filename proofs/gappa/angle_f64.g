@@ -1,4 +1,4 @@
-# slerp's f64 angle (src/float/double.rs, atan2_of_root(w, x), the angle
+# slerp's f64 angle (src/quat/slerp/kernels_f64.rs, atan2_of_root(w, x), the angle
 # atan2(sqrt(w), x) for w >= 0, x >= 0), the branch w < x x: z = w / (x x),
 # the square root of z in f32, and a = u + u (z p(z)) with p the degree-7
 # polynomial of ATAN in the code's grouping. The result is a (0 pi/2 + a,

@@ -1,4 +1,4 @@
-# slerp's f64 angle (src/float/double.rs, atan2_of_root(w, x)), the
+# slerp's f64 angle (src/quat/slerp/kernels_f64.rs, atan2_of_root(w, x)), the
 # branch w > x x (for w = x x the code takes the result of angle_f64.g,
 # with z = 1): z = (x x) / w, a as in angle_f64.g, and the result
 # FRAC_PI_2 - a (quarter = 1, a's sign flipped). f64, round to nearest

@@ -1,4 +1,4 @@
-# slerp's f64 sine (src/float/double.rs, sin_to_quarter_turn):
+# slerp's f64 sine (src/quat/slerp/kernels_f64.rs, sin_to_quarter_turn):
 # s = x x; p = (S0 + s S1) + (s s) (S2 + s S3); y = x + (x s) p.
 # f64, round to nearest even, every operation rounded.
 #
