@@ -1,8 +1,9 @@
-//! What the unit tests draw: how many cases, and random unit quaternions.
+//! What the unit tests draw: how many cases, random unit quaternions and
+//! rigid body transforms.
 
 use rand::Rng;
 
-use crate::Quat;
+use crate::{Cvec3, Quat, RigTForm};
 
 /// 200,000 draws, or `RIGTFORM_DRAWS` (the bounds in `accuracy` were
 /// measured with 10,000,000).
@@ -27,4 +28,13 @@ pub(crate) fn unit_quat(rng: &mut impl Rng) -> Quat {
             return q.normalize();
         }
     }
+}
+
+/// A random rigid body transform: a translation and an axis and angle of
+/// components in [-10, 10).
+pub(crate) fn rig_tform(rng: &mut impl Rng) -> RigTForm {
+    let mut c = || rng.random_range(-10.0f32..10.0);
+    let t = Cvec3::new(c(), c(), c());
+    let r = Quat::from_axis_angle(Cvec3::new(c(), c(), c()), c());
+    RigTForm::new(t, r)
 }

@@ -124,21 +124,15 @@ impl TryFrom<Matrix4> for RigTForm {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_draws::rig_tform;
     use crate::vec::Cvec3;
-    use rand::{Rng, SeedableRng};
-
-    fn random(rng: &mut rand::rngs::StdRng) -> RigTForm {
-        let mut c = || rng.random_range(-10.0f32..10.0);
-        let t = Cvec3::new(c(), c(), c());
-        let r = Quat::from_axis_angle(Cvec3::new(c(), c(), c()), c());
-        RigTForm::new(t, r)
-    }
+    use rand::SeedableRng;
 
     #[test]
     fn matrices_of_rig_tforms_come_back() {
         let mut rng = rand::rngs::StdRng::seed_from_u64(31);
         for _ in 0..10_000 {
-            let a = random(&mut rng);
+            let a = rig_tform(&mut rng);
             let back = RigTForm::try_from(Matrix4::from(a)).unwrap();
             assert_eq!(
                 back.t.to_array().map(f32::to_bits),

@@ -310,15 +310,9 @@ impl Mul<Cvec3> for RigTForm {
 #[allow(deprecated)]
 mod tests {
     use super::*;
+    use crate::test_draws::rig_tform;
     use nalgebra as na;
     use rand::{Rng, SeedableRng};
-
-    fn random(rng: &mut rand::rngs::StdRng) -> RigTForm {
-        let mut c = || rng.random_range(-10.0f32..10.0);
-        let t = Cvec3::new(c(), c(), c());
-        let r = Quat::from_axis_angle(Cvec3::new(c(), c(), c()), c());
-        RigTForm::new(t, r)
-    }
 
     fn na_iso(a: RigTForm) -> na::Isometry3<f32> {
         na::Isometry3::from_parts(
@@ -332,7 +326,7 @@ mod tests {
     fn other_names_agree_with_nalgebra() {
         let mut rng = rand::rngs::StdRng::seed_from_u64(30);
         for _ in 0..10_000 {
-            let (a, b) = (random(&mut rng), random(&mut rng));
+            let (a, b) = (rig_tform(&mut rng), rig_tform(&mut rng));
             let iso = na_iso(a);
             let p = Cvec3::new(3.0, -1.0, 0.25);
             let np = na::Point3::new(p.x, p.y, p.z);

@@ -158,23 +158,36 @@ macro_rules! law {
 }
 
 use super as laws;
+
+/// Why a law Kani is not expected to finish has no harness.
+const BEYOND_THE_SOLVER: &str =
+    "beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies";
 use Harness::{None as NoHarness, Proof};
 
 /// Every law, with its inputs.
 pub const LAWS: &[Law] = &[
     law!(
         "product_norm_is_multiplicative",
-        Proof(&["quat_product_multiplies_norms_small", "quat_product_multiplies_norms_moderate", "quat_product_multiplies_norms_large"]),
+        Proof(&[
+            "quat_product_multiplies_norms_small",
+            "quat_product_multiplies_norms_moderate",
+            "quat_product_multiplies_norms_large"
+        ]),
         |d| { laws::product_norm_is_multiplicative(d.unit_quat(), d.unit_quat()) }
     ),
     law!(
         "rotation_preserves_length",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| { laws::rotation_preserves_length(d.unit_quat(), d.vec3(1e3)) }
     ),
     law!(
         "normalize_is_unit (edge grid)",
-        Proof(&["normalize_is_unit_from_subnormal_to_max", "normalize_is_unit_scaled_up", "normalize_is_unit_unscaled", "normalize_is_unit_scaled_down"]),
+        Proof(&[
+            "normalize_is_unit_from_subnormal_to_max",
+            "normalize_is_unit_scaled_up",
+            "normalize_is_unit_unscaled",
+            "normalize_is_unit_scaled_down"
+        ]),
         |d| {
             // Zero has no direction; one of subnormals only stands in for it.
             let q = finite_edge_quat(d);
@@ -188,12 +201,12 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "pow_is_unit (edge grid, edge alphas)",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| { laws::pow_is_unit(finite_edge_quat(d), edge_alpha(d)) }
     ),
     law!(
         "pow_is_unit (random, any finite alpha)",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| { laws::pow_is_unit(d.unit_quat(), finite(d)) }
     ),
     law!(
@@ -215,7 +228,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_is_unit (pairs, edge alphas)",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| {
             let (a, b) = pair(d);
             laws::slerp_is_unit(a, b, edge_alpha(d))
@@ -223,7 +236,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_is_unit (pairs, alpha in [-2, 3])",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| {
             let (a, b) = pair(d);
             laws::slerp_is_unit(a, b, d.uniform(-2.0, 3.0))
@@ -231,7 +244,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_is_unit (pairs, any finite alpha)",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| {
             let (a, b) = pair(d);
             laws::slerp_is_unit(a, b, finite(d))
@@ -264,7 +277,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_turns_by_alpha_times_the_angle",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| {
             let (a, b) = pair(d);
             laws::slerp_turns_by_alpha_times_the_angle(a, b, d.uniform(0.0, 1.0))
@@ -280,7 +293,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "slerp_takes_the_short_way",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| {
             let (a, b) = pair(d);
             laws::slerp_takes_the_short_way(a, b, d.uniform(-2.0, 3.0))
@@ -294,13 +307,13 @@ pub const LAWS: &[Law] = &[
             laws::slerp_reaches_the_rotation_of_b_at_one(a, b)
         }
     ),
-    law!("nlerp_is_unit", NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"), |d| {
+    law!("nlerp_is_unit", NoHarness(BEYOND_THE_SOLVER), |d| {
         let (a, b) = pair(d);
         laws::nlerp_is_unit(a, b, d.uniform(0.0, 1.0))
     }),
     law!(
         "blend_is_unit_or_identity",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| {
             let (a, b, c) = (d.unit_quat(), d.unit_quat(), d.unit_quat());
             let w = [
@@ -318,7 +331,11 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "product_with_inverse_is_real",
-        Proof(&["quat_times_inverse_is_real_small", "quat_times_inverse_is_real_moderate", "quat_times_inverse_is_real_large"]),
+        Proof(&[
+            "quat_times_inverse_is_real_small",
+            "quat_times_inverse_is_real_moderate",
+            "quat_times_inverse_is_real_large"
+        ]),
         |d| { laws::product_with_inverse_is_real(d.unit_quat()) }
     ),
     law!(
@@ -328,22 +345,22 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "rigid_product_with_inverse_is_identity",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| { laws::rigid_product_with_inverse_is_identity(rig_tform(d)) }
     ),
     law!(
         "rigid_inverse_is_an_involution",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| { laws::rigid_inverse_is_an_involution(rig_tform(d)) }
     ),
     law!(
         "rigid_inverse_matches_matrix_inverse",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| { laws::rigid_inverse_matches_matrix_inverse(rig_tform(d)) }
     ),
     law!(
         "rigid_matrix_moves_points_as_the_transform",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| {
             let (a, p) = (rig_tform(d), d.vec3(100.0));
             laws::rigid_matrix_moves_points_as_the_transform(a, Cvec4::from_point(p))?;
@@ -391,7 +408,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "euler_angles_give_back_the_rotation",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| {
             let order = EulerRot::ALL
                 .get(d.below(EulerRot::ALL.len()))
@@ -402,7 +419,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "euler_angles_give_back_the_rotation (gimbal lock)",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| {
             let order = EulerRot::ALL
                 .get(d.below(EulerRot::ALL.len()))
@@ -416,12 +433,12 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "from_matrix_inverts_from_quat",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| { laws::from_matrix_inverts_from_quat(d.unit_quat()) }
     ),
     law!(
         "rotation_arc_takes_from_to_to",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| {
             let (from, to) = (d.vec3(10.0), d.vec3(10.0));
             if from.norm_squared() < 1e-6 || to.norm_squared() < 1e-6 {
@@ -432,7 +449,7 @@ pub const LAWS: &[Law] = &[
     ),
     law!(
         "rotation_arc_takes_from_to_to (nearly the same or opposite)",
-        NoHarness("beyond the solver: tests/properties.rs runs it on the mixed draws of testkit::strategies instead"),
+        NoHarness(BEYOND_THE_SOLVER),
         |d| {
             let from = d.vec3(10.0);
             if from.norm_squared() < 1e-6 {
