@@ -322,6 +322,24 @@ mod tests {
     }
 
     /// Each name means what it means in nalgebra's `Isometry3`.
+    /// The product is the notes' "rbt * rbt" (translation `t1 + r1 t2`,
+    /// rotation `r1 r2`), nalgebra's `Isometry3 * Isometry3`, and `*`.
+    #[test]
+    fn mul_rig_tform_composes_as_nalgebra_and_is_the_operator() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(36);
+        for _ in 0..10_000 {
+            let (a, b) = (rig_tform(&mut rng), rig_tform(&mut rng));
+            let ab = a.mul_rig_tform(b);
+            assert_eq!(ab, a * b);
+            let theirs = na_iso(a) * na_iso(b);
+            let t = theirs.translation.vector;
+            assert!((ab.t - Cvec3::new(t.x, t.y, t.z)).norm() < 1e-4 * (1.0 + ab.t.norm()));
+            let q = theirs.rotation.quaternion();
+            let r = Quat::from_wxyz(q.w, q.i, q.j, q.k);
+            assert!(ab.r.angle_to(r) < 1e-5, "{a:?} {b:?}");
+        }
+    }
+
     #[test]
     fn other_names_agree_with_nalgebra() {
         let mut rng = rand::rngs::StdRng::seed_from_u64(30);
