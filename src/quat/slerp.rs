@@ -2,9 +2,9 @@
 //! evaluates it, read top-down:
 //!
 //! - this file: `slerp` itself, which picks the evaluation for the target;
-//! - `slerp/in_f64.rs` (x86-64, AArch64): the in-plane formula with its
-//!   angle (from the wedge of the inputs) and its sines in f64, for the
-//!   ordinary pairs, with its two kernels in `slerp/kernels_f64.rs`;
+//! - `slerp/in_f64.rs` (x86-64, AArch64): the in-plane formula in f64,
+//!   its arc from the wedge of the inputs, for the ordinary pairs, with the
+//!   polynomials of `slerp/kernels_f64.rs`;
 //! - `slerp/in_f32.rs`: the whole of slerp in f32 (every input, every
 //!   `alpha`), on every other target, and on x86-64 and AArch64 for what
 //!   the f64 evaluation leaves;
@@ -66,9 +66,13 @@ impl Quat {
     /// this is scale-free: inputs a little off unit norm still give the
     /// rotation between them. On x86-64 and AArch64, where an f64
     /// operation costs what an f32 one does, `alpha` in (0, 1] takes the
-    /// same formula with `phi` from the wedge of the inputs and the sines in
-    /// f64 (`quat/slerp/in_f64.rs`): one polynomial each, no branch that random
-    /// inputs mispredict, and coefficients rounded to f32 once; inputs it
+    /// same formula in f64 (`quat/slerp/in_f64.rs`), with `phi^2` and
+    /// `phi / sin(phi)` from the tangent of the half angle (the wedge of the
+    /// inputs over the sum of their norms' product and their dot product) and
+    /// each coefficient `sin(s phi) / sin(phi)` as `s phi / sin(phi)` times a
+    /// polynomial in `(s phi)^2`: one division, no square root, no branch
+    /// that random inputs mispredict, and coefficients rounded to f32 once;
+    /// inputs it
     /// does not take (norms more than 1e-6 apart, components beyond 2^16,
     /// angles of 2^-12 rad or less) go the way described here. For
     /// extrapolation (where the two coefficients

@@ -1,31 +1,32 @@
-//! Slerp's in-plane formula with its angle and sines in f64, on x86-64
-//! and AArch64: what [`Quat::slerp`] returns there for `alpha` in (0, 1],
-//! and what the vectorized lanes of [`Quat::slerp_slice`] compute, one set
-//! of functions for both, so that the two agree bit for bit.
+//! Slerp's in-plane formula in f64, on x86-64 and AArch64: what
+//! [`Quat::slerp`] returns there for `alpha` in (0, 1], and what the
+//! vectorized lanes of [`Quat::slerp_slice`] compute, one set of functions
+//! for both, so that the two agree bit for bit.
 //!
-//! The angle comes from the wedge of the two inputs, not from a rotation
+//! The arc comes from the wedge of the two inputs, not from a rotation
 //! between them: `|a ^ b|^2`, the sum of the squares of the six 2x2 minors
 //! of `a` and `b`, is `|a|^2 |b|^2 sin^2(phi)` and needs neither their dot
 //! product nor their norms first, so it starts as soon as the inputs are
-//! loaded; `phi = atan2(|a ^ b|, |a . b|)`. With `r = |a| |b| / |a ^ b|`
-//! (`1 / sin(phi)`, from the same two numbers, so that it agrees with
-//! `phi`) the result is `sin((1 - alpha) phi) r a + sin(alpha phi) r b`,
-//! `b` negated when the dot product is negative (the notes' `cn`).
+//! loaded. Over `(|a| |b| + |a . b|)^2` it is `tan^2(phi / 2)`, and from
+//! that one quotient two polynomials give `phi^2` and `phi / sin(phi)`
+//! ([`Pair::arc`]), without a square root; the result is
+//! `sin((1 - alpha) phi) / sin(phi) a + sin(alpha phi) / sin(phi) b`,
+//! `b` negated when the dot product is negative (the notes' `cn`), each
+//! coefficient `s phi / sin(phi)` times the `sin(x) / x` of its share `s`
+//! of the arc, which is a polynomial in `x^2 = s^2 phi^2` ([`Pair::slerp`]).
+//! One division, no square root and no select on the way from the inputs
+//! to the result: the chain of dependent operations that bounds a call's
+//! time is short, and only the checks that ordinary inputs pass branch.
 
-use super::kernels_f64::{atan2_of_root, sin_to_quarter_turn};
+use super::kernels_f64::{ATAN, SIN};
 use super::{NEARLY_UNIT, SMALL_ANGLE};
-use crate::float::{sqrt, SQUARES_UNDERFLOW};
+use crate::float::SQUARES_UNDERFLOW;
 use crate::Quat;
 
 /// 2^32, the largest squared norm the evaluation takes: components below
 /// 2^16, whose products and sums of squares stay far from overflow (at
 /// most 2^69), so that no operation makes an infinity, and none a NaN.
 pub(super) const NORM_SQUARED_LIMIT: f32 = 4_294_967_296.0;
-
-/// 2^100: `1 / sin^2(phi)` is below 2^26 wherever the evaluation's result
-/// is used (`phi > SMALL_ANGLE`); elsewhere (in vectorized lanes, whose
-/// result is then replaced) it is clamped here, to stay finite in f32.
-pub(super) const INVERSE_SINE_SQUARED_LIMIT: f64 = 1.267_650_600_228_229_4e30;
 
 /// What the evaluation needs of a pair `(a, b)`: squared norms, dot
 /// product and squared wedge.
@@ -84,43 +85,88 @@ impl Pair {
             & (self.wedge >= SQUARES_UNDERFLOW)
     }
 
-    /// The notes' `phi` in [0, pi/2], the angle between `a` and `cn(b)`,
-    /// in f64.
+    /// The arc from `a` to `cn(b)`: the square of the notes' `phi` in
+    /// [0, pi/2] and `phi / sin(phi)`, in f64, from the tangent of the half
+    /// angle, without a square root and with one division.
+    ///
+    /// `tan^2(phi / 2) = |a ^ b|^2 / (|a| |b| + |a . b|)^2`, with `|a| |b|`
+    /// taken as `(|a|^2 + |b|^2) / 2`: the squared norms are within 1e-6 of
+    /// each other (relatively) where the evaluation applies, where the two
+    /// differ by less than 1.3e-13 of either. With `t^2` that quotient (in
+    /// [0, 1]) and `atan(t) = t h(t^2)` (`h = 1 + t^2 P(t^2)`, the
+    /// polynomial [`ATAN`] of the angle kernel), `phi = 2 t h`, so that
+    /// `phi^2 = 4 t^2 h^2` and, as `sin(phi) = 2 t / (1 + t^2)`,
+    /// `phi / sin(phi) = h (1 + t^2)`: both functions of `t^2` alone.
     ///
     /// # Preconditions
     ///
     /// [`applies`](Self::applies) (or, in vectorized lanes, a squared
     /// wedge put in its place that is positive).
     #[inline(always)]
-    pub(super) fn angle(&self) -> f64 {
-        atan2_of_root(f64::from(self.wedge), f64::from(self.dot.abs()))
+    pub(super) fn arc(&self) -> Arc {
+        let m = 0.5 * (f64::from(self.n2) + f64::from(self.on2));
+        let d = m + f64::from(self.dot.abs());
+        let t2 = f64::from(self.wedge) / (d * d);
+        let h = 1.0 + t2 * atan_polynomial(t2);
+        Arc {
+            phi_squared: (4.0 * t2) * (h * h),
+            phi_over_sine: h * (1.0 + t2),
+        }
     }
 
-    /// Slerp of `a` to `b` by `alpha` in (0, 1], for this pair's angle
-    /// `phi`: `sin((1 - alpha) phi) r a + sin(alpha phi) r cn(b)` with
-    /// `r = 1 / sin(phi)` from the wedge and the dot product. `alpha phi`
-    /// and `(1 - alpha) phi` are exact or within an f64 ulp, the sines
-    /// within a tenth of an f32 ulp, `r` within 0.75 of one (its square
-    /// root is taken in f32); each coefficient is rounded to f32 once.
+    /// Slerp of `a` to `b` by `alpha` in (0, 1], for this pair's `arc`:
+    /// `sin((1 - alpha) phi) / sin(phi) a + sin(alpha phi) / sin(phi)
+    /// cn(b)`, each coefficient `s phi / sin(phi) sinc(s phi)` for its
+    /// share `s` of the arc, `sinc(x) = sin(x) / x = 1 + x^2 Q(x^2)` with
+    /// the polynomial [`SIN`] of the sine kernel (of `x^2 = s^2 phi^2`:
+    /// `s^2` is exact), rounded to f32 once.
     ///
     /// # Preconditions
     ///
-    /// `phi > SMALL_ANGLE` for the result to be slerp's (then `r` is below
-    /// 2^13); those of [`angle`](Self::angle).
+    /// `phi > SMALL_ANGLE` for the result to be slerp's; those of
+    /// [`arc`](Self::arc).
     #[inline(always)]
-    pub(super) fn slerp(&self, a: Quat, b: Quat, phi: f64, alpha: f32) -> Quat {
-        let (w, x) = (f64::from(self.wedge), f64::from(self.dot));
-        let inverse_sine_squared = ((w + x * x) / w).min(INVERSE_SINE_SQUARED_LIMIT);
-        let r = f64::from(sqrt(inverse_sine_squared as f32));
+    pub(super) fn slerp(&self, a: Quat, b: Quat, arc: Arc, alpha: f32) -> Quat {
         let alpha = f64::from(alpha);
-        let c0 = sin_to_quarter_turn((1.0 - alpha) * phi) * r;
-        let c1 = sin_to_quarter_turn(alpha * phi) * r;
+        let rest = 1.0 - alpha;
+        let c0 = (rest * arc.phi_over_sine) * sinc((rest * rest) * arc.phi_squared);
+        let c1 = (alpha * arc.phi_over_sine) * sinc((alpha * alpha) * arc.phi_squared);
         a.weighted_sum(c0 as f32, b, (c1 as f32).copysign(self.dot))
     }
 }
 
-/// The angle above which a pair's evaluation is slerp's, in f64.
-pub(super) const SMALL_ANGLE_F64: f64 = SMALL_ANGLE as f64;
+/// What slerp's coefficients need of the arc between a pair.
+#[derive(Clone, Copy)]
+pub(super) struct Arc {
+    /// `phi^2`, the square of the notes' `phi`.
+    pub(super) phi_squared: f64,
+    /// `phi / sin(phi)`.
+    pub(super) phi_over_sine: f64,
+}
+
+/// `(atan(u) - u) / u^3` as a polynomial in `s = u^2` ([`ATAN`]), by
+/// Estrin's scheme, as the angle kernel evaluates it.
+#[inline(always)]
+fn atan_polynomial(s: f64) -> f64 {
+    let c = ATAN;
+    let s2 = s * s;
+    let s4 = s2 * s2;
+    let low = (c[0] + s * c[1]) + s2 * (c[2] + s * c[3]);
+    let high = (c[4] + s * c[5]) + s2 * (c[6] + s * c[7]);
+    low + s4 * high
+}
+
+/// `sin(x) / x` from `s = x^2`, for `x` in [0, pi/2]: `1 + s Q(s)` with
+/// the polynomial [`SIN`] in pairs, as the sine kernel evaluates it.
+#[inline(always)]
+fn sinc(s: f64) -> f64 {
+    let q = (SIN[0] + s * SIN[1]) + (s * s) * (SIN[2] + s * SIN[3]);
+    1.0 + s * q
+}
+
+/// The square of the angle above which a pair's evaluation is slerp's, in
+/// f64 (exact: 2^-24).
+pub(super) const SMALL_ANGLE_SQUARED_F64: f64 = (SMALL_ANGLE as f64) * (SMALL_ANGLE as f64);
 
 impl Quat {
     /// [`slerp`](Self::slerp) by the f64 evaluation, where it applies
@@ -145,11 +191,11 @@ impl Quat {
             return None;
         }
         // Never NaN here: the pair applies.
-        let phi = pair.angle();
-        if phi <= SMALL_ANGLE_F64 {
+        let arc = pair.arc();
+        if arc.phi_squared <= SMALL_ANGLE_SQUARED_F64 {
             return None;
         }
-        Some(pair.slerp(self, other, phi, alpha))
+        Some(pair.slerp(self, other, arc, alpha))
     }
 }
 
@@ -236,11 +282,11 @@ pub(super) mod tests {
         assert!(a.slerp_f64(past, 0.5).is_some());
     }
 
-    /// The pair's angle is the angle between `a` and `cn(b)` (half the
-    /// rotation angle between them), against f64 arithmetic on the same
-    /// f32 inputs.
+    /// The pair's arc is that between `a` and `cn(b)` (half the rotation
+    /// angle between them): its `phi^2` and `phi / sin(phi)` against f64
+    /// arithmetic on the same f32 inputs.
     #[test]
-    fn angle_is_the_angle_between_the_pair() {
+    fn arc_is_the_arc_between_the_pair() {
         let mut rng = rand::rngs::StdRng::seed_from_u64(13);
         for _ in 0..10_000 {
             let (a, b) = (unit(&mut rng), unit(&mut rng));
@@ -253,8 +299,12 @@ pub(super) mod tests {
                 .map(|(y, x)| (y - dot * x).powi(2))
                 .sum::<f64>();
             let exact = along.sqrt().atan2(dot.abs());
-            let phi = Pair::of(a, b).angle();
+            let arc = Pair::of(a, b).arc();
+            let phi = arc.phi_squared.sqrt();
             assert!((phi - exact).abs() <= 1e-6 * exact + 1e-7, "{phi} {exact}");
+            let ratio = exact / exact.sin();
+            let error = (arc.phi_over_sine - ratio).abs();
+            assert!(error <= 1e-6 * ratio, "{} {ratio}", arc.phi_over_sine);
         }
     }
 }

@@ -6,14 +6,13 @@ use super::steps::Isa;
 use super::Slerped;
 use crate::Quat;
 use core::arch::x86_64::{
-    __m128, __m256, __m256d, _mm256_add_pd, _mm256_add_ps, _mm256_and_pd, _mm256_and_ps,
-    _mm256_andnot_ps, _mm256_blendv_pd, _mm256_castpd_ps, _mm256_castps128_ps256,
-    _mm256_castps256_ps128, _mm256_castps_pd, _mm256_cmp_pd, _mm256_cmp_ps, _mm256_cvtpd_ps,
-    _mm256_cvtps_pd, _mm256_div_pd, _mm256_extractf128_ps, _mm256_insertf128_ps, _mm256_min_pd,
-    _mm256_movemask_pd, _mm256_movemask_ps, _mm256_mul_pd, _mm256_mul_ps, _mm256_or_pd,
-    _mm256_or_ps, _mm256_set1_pd, _mm256_set1_ps, _mm256_setzero_ps, _mm256_sub_pd, _mm256_sub_ps,
-    _mm256_unpackhi_pd, _mm256_unpackhi_ps, _mm256_unpacklo_pd, _mm256_unpacklo_ps, _mm256_xor_pd,
-    _mm_loadu_ps, _mm_sqrt_ps, _mm_storeu_ps, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LE_OQ, _CMP_LT_OQ,
+    __m128, __m256, __m256d, _mm256_add_pd, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps,
+    _mm256_castpd_ps, _mm256_castps128_ps256, _mm256_castps256_ps128, _mm256_castps_pd,
+    _mm256_cmp_pd, _mm256_cmp_ps, _mm256_cvtpd_ps, _mm256_cvtps_pd, _mm256_div_pd,
+    _mm256_extractf128_ps, _mm256_insertf128_ps, _mm256_movemask_pd, _mm256_movemask_ps,
+    _mm256_mul_pd, _mm256_mul_ps, _mm256_or_ps, _mm256_set1_pd, _mm256_set1_ps, _mm256_setzero_ps,
+    _mm256_sub_pd, _mm256_sub_ps, _mm256_unpackhi_pd, _mm256_unpackhi_ps, _mm256_unpacklo_pd,
+    _mm256_unpacklo_ps, _mm_loadu_ps, _mm_storeu_ps, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LE_OQ,
     _CMP_NGT_UQ,
 };
 
@@ -126,32 +125,8 @@ impl Isa for Avx {
         unsafe { _mm256_div_pd(a, b) }
     }
     #[inline(always)]
-    fn min_d(a: __m256d, b: __m256d) -> __m256d {
-        unsafe { _mm256_min_pd(a, b) }
-    }
-    #[inline(always)]
-    fn and_d(a: __m256d, b: __m256d) -> __m256d {
-        unsafe { _mm256_and_pd(a, b) }
-    }
-    #[inline(always)]
-    fn or_d(a: __m256d, b: __m256d) -> __m256d {
-        unsafe { _mm256_or_pd(a, b) }
-    }
-    #[inline(always)]
-    fn xor_d(a: __m256d, b: __m256d) -> __m256d {
-        unsafe { _mm256_xor_pd(a, b) }
-    }
-    #[inline(always)]
-    fn lt_d(a: __m256d, b: __m256d) -> __m256d {
-        unsafe { _mm256_cmp_pd::<_CMP_LT_OQ>(a, b) }
-    }
-    #[inline(always)]
     fn gt_d(a: __m256d, b: __m256d) -> __m256d {
         unsafe { _mm256_cmp_pd::<_CMP_GT_OQ>(a, b) }
-    }
-    #[inline(always)]
-    fn select_d(mask: __m256d, yes: __m256d, no: __m256d) -> __m256d {
-        unsafe { _mm256_blendv_pd(no, yes, mask) }
     }
     #[inline(always)]
     fn bits_d(a: __m256d) -> u32 {
@@ -169,10 +144,6 @@ impl Isa for Avx {
     #[inline(always)]
     fn join(low: __m256d, high: __m256d) -> __m256 {
         unsafe { pair(_mm256_cvtpd_ps(low), _mm256_cvtpd_ps(high)) }
-    }
-    #[inline(always)]
-    fn root(a: __m256d) -> __m256d {
-        unsafe { _mm256_cvtps_pd(_mm_sqrt_ps(_mm256_cvtpd_ps(a))) }
     }
     #[inline(always)]
     fn load<T: Slerped>(values: &[T]) -> [__m256; 4] {

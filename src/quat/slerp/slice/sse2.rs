@@ -7,12 +7,11 @@ use super::steps::Isa;
 use super::Slerped;
 use crate::Quat;
 use core::arch::x86_64::{
-    __m128, __m128d, _mm_add_pd, _mm_add_ps, _mm_and_pd, _mm_and_ps, _mm_andnot_pd, _mm_andnot_ps,
-    _mm_cmpge_ps, _mm_cmpgt_pd, _mm_cmple_ps, _mm_cmplt_pd, _mm_cmpngt_ps, _mm_cvtpd_ps,
-    _mm_cvtps_pd, _mm_div_pd, _mm_loadu_ps, _mm_min_pd, _mm_movehl_ps, _mm_movelh_ps,
-    _mm_movemask_pd, _mm_movemask_ps, _mm_mul_pd, _mm_mul_ps, _mm_or_pd, _mm_or_ps, _mm_set1_pd,
-    _mm_set1_ps, _mm_setzero_ps, _mm_sqrt_ps, _mm_storeu_ps, _mm_sub_pd, _mm_sub_ps,
-    _mm_unpackhi_ps, _mm_unpacklo_ps, _mm_xor_pd,
+    __m128, __m128d, _mm_add_pd, _mm_add_ps, _mm_and_ps, _mm_andnot_ps, _mm_cmpge_ps, _mm_cmpgt_pd,
+    _mm_cmple_ps, _mm_cmpngt_ps, _mm_cvtpd_ps, _mm_cvtps_pd, _mm_div_pd, _mm_loadu_ps,
+    _mm_movehl_ps, _mm_movelh_ps, _mm_movemask_pd, _mm_movemask_ps, _mm_mul_pd, _mm_mul_ps,
+    _mm_or_ps, _mm_set1_pd, _mm_set1_ps, _mm_setzero_ps, _mm_storeu_ps, _mm_sub_pd, _mm_sub_ps,
+    _mm_unpackhi_ps, _mm_unpacklo_ps,
 };
 
 /// x86-64 with SSE2 (compiled only where `target_feature = "sse2"`).
@@ -100,32 +99,8 @@ impl Isa for Sse2 {
         unsafe { _mm_div_pd(a, b) }
     }
     #[inline(always)]
-    fn min_d(a: __m128d, b: __m128d) -> __m128d {
-        unsafe { _mm_min_pd(a, b) }
-    }
-    #[inline(always)]
-    fn and_d(a: __m128d, b: __m128d) -> __m128d {
-        unsafe { _mm_and_pd(a, b) }
-    }
-    #[inline(always)]
-    fn or_d(a: __m128d, b: __m128d) -> __m128d {
-        unsafe { _mm_or_pd(a, b) }
-    }
-    #[inline(always)]
-    fn xor_d(a: __m128d, b: __m128d) -> __m128d {
-        unsafe { _mm_xor_pd(a, b) }
-    }
-    #[inline(always)]
-    fn lt_d(a: __m128d, b: __m128d) -> __m128d {
-        unsafe { _mm_cmplt_pd(a, b) }
-    }
-    #[inline(always)]
     fn gt_d(a: __m128d, b: __m128d) -> __m128d {
         unsafe { _mm_cmpgt_pd(a, b) }
-    }
-    #[inline(always)]
-    fn select_d(mask: __m128d, yes: __m128d, no: __m128d) -> __m128d {
-        unsafe { _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no)) }
     }
     #[inline(always)]
     fn bits_d(a: __m128d) -> u32 {
@@ -138,10 +113,6 @@ impl Isa for Sse2 {
     #[inline(always)]
     fn join(low: __m128d, high: __m128d) -> __m128 {
         unsafe { _mm_movelh_ps(_mm_cvtpd_ps(low), _mm_cvtpd_ps(high)) }
-    }
-    #[inline(always)]
-    fn root(a: __m128d) -> __m128d {
-        unsafe { _mm_cvtps_pd(_mm_sqrt_ps(_mm_cvtpd_ps(a))) }
     }
     #[inline(always)]
     fn load<T: Slerped>(values: &[T]) -> [__m128; 4] {

@@ -3,8 +3,8 @@
 //! x86-64 target with SSE, AVX where it is enabled at compile time).
 //!
 //! The pairs go through the operations of `Quat::slerp_f64`'s evaluation
-//! ([`Pair::of`], [`Pair::applies`], `atan2_of_root`, [`Pair::slerp`] and
-//! `sin_to_quarter_turn`), the same ones in the same order: the f32 part in
+//! ([`Pair::of`], [`Pair::applies`], [`Pair::arc`] and [`Pair::slerp`]),
+//! the same ones in the same order: the f32 part in
 //! registers of [`Isa::LANES`] lanes, the f64 part in registers of half as
 //! many. No fused multiply-add is used (it rounds once where the single
 //! call rounds twice), so every lane's result is the single call's, bit for
@@ -13,8 +13,8 @@
 //! lane. Lanes whose pair that evaluation does not take are done again by
 //! `slerp`, as in the portable lanes.
 //!
-//! The evaluation of one pair is a long chain of dependent operations (two
-//! divisions and two square roots among them), longer than the processor
+//! The evaluation of one pair is a long chain of dependent operations (a
+//! division and three polynomials among them), longer than the processor
 //! can look ahead past; several blocks of [`Isa::LANES`] pairs go through
 //! it together, stage by stage, so that while one block's lanes wait for a
 //! result the others' have work. The compiler vectorizes the portable lanes
@@ -34,9 +34,10 @@
 //!
 //! [`Pair::of`]: super::super::in_f64::Pair::of
 //! [`Pair::applies`]: super::super::in_f64::Pair::applies
+//! [`Pair::arc`]: super::super::in_f64::Pair::arc
 //! [`Pair::slerp`]: super::super::in_f64::Pair::slerp
 
-use super::super::in_f64::{INVERSE_SINE_SQUARED_LIMIT, NORM_SQUARED_LIMIT, SMALL_ANGLE_F64};
+use super::super::in_f64::{NORM_SQUARED_LIMIT, SMALL_ANGLE_SQUARED_F64};
 use super::super::kernels_f64::{ATAN as ATAN_F64, SIN as SIN_F64};
 use super::super::NEARLY_UNIT;
 use super::Slerped;
@@ -89,29 +90,14 @@ pub(super) trait Isa {
     fn mul_d(a: Self::D, b: Self::D) -> Self::D;
     /// `a / b` in f64.
     fn div_d(a: Self::D, b: Self::D) -> Self::D;
-    /// `if a < b { a } else { b }` in f64.
-    fn min_d(a: Self::D, b: Self::D) -> Self::D;
-    /// Bitwise `a & b` in f64 lanes.
-    fn and_d(a: Self::D, b: Self::D) -> Self::D;
-    /// Bitwise `a | b` in f64 lanes.
-    fn or_d(a: Self::D, b: Self::D) -> Self::D;
-    /// Bitwise `a ^ b` in f64 lanes.
-    fn xor_d(a: Self::D, b: Self::D) -> Self::D;
-    /// All ones where `a < b`, else zeros.
-    fn lt_d(a: Self::D, b: Self::D) -> Self::D;
     /// All ones where `a > b`, else zeros.
     fn gt_d(a: Self::D, b: Self::D) -> Self::D;
-    /// `yes` where `mask` (all ones or all zeros per lane) is set, else `no`.
-    fn select_d(mask: Self::D, yes: Self::D, no: Self::D) -> Self::D;
     /// The sign bits of the f64 lanes, lane `k` in bit `k`.
     fn bits_d(a: Self::D) -> u32;
     /// The low and the high half of the f32 lanes, each widened to f64.
     fn halves(a: Self::F) -> [Self::D; 2];
     /// Two registers of f64 lanes rounded to f32, the first the low half.
     fn join(low: Self::D, high: Self::D) -> Self::F;
-    /// The f32 square root of every lane, rounded to f32 first and widened
-    /// back: `f64::from(sqrt(x as f32))`.
-    fn root(a: Self::D) -> Self::D;
     /// The rotations of [`LANES`](Self::LANES) values, one register per
     /// component (`w`, `x`, `y`, `z`), lanes in the order
     /// [`PAIR_OF_LANE`](Self::PAIR_OF_LANE) gives.
@@ -213,7 +199,7 @@ fn evaluate<I: Isa, T: Slerped, const BLOCKS: usize, const CHAINS: usize, const 
     let (add, sub, mul) = (I::add, I::sub, I::mul);
     let (add_d, sub_d, mul_d, div_d) = (I::add_d, I::sub_d, I::mul_d, I::div_d);
     let splat = I::splat_d;
-    let (sign32, sign64) = (I::splat(-0.0), splat(-0.0));
+    let sign32 = I::splat(-0.0);
     let dot = |p: [I::F; 4], q: [I::F; 4]| {
         add(
             add(add(mul(p[0], q[0]), mul(p[1], q[1])), mul(p[2], q[2])),
@@ -230,6 +216,7 @@ fn evaluate<I: Isa, T: Slerped, const BLOCKS: usize, const CHAINS: usize, const 
     let zero = I::splat(0.0);
     let (mut a, mut b) = ([[zero; 4]; BLOCKS], [[zero; 4]; BLOCKS]);
     let (mut dots, mut wedges, mut applies) = ([zero; BLOCKS], [zero; BLOCKS], [0; BLOCKS]);
+    let (mut norms, mut other_norms) = ([zero; BLOCKS], [zero; BLOCKS]);
     let lanes = |j: usize| I::LANES * j..I::LANES * (j + 1);
     for j in 0..BLOCKS {
         let ([aw, ax, ay, az], [bw, bx, by, bz]) = (I::load(&s[lanes(j)]), I::load(&e[lanes(j)]));
@@ -255,86 +242,78 @@ fn evaluate<I: Isa, T: Slerped, const BLOCKS: usize, const CHAINS: usize, const 
         let resolved = I::ge(wedge, I::splat(SQUARES_UNDERFLOW));
         applies[j] = I::bits(I::and(I::and(bounded, near_unit), resolved));
         (a[j], b[j]) = ([aw, ax, ay, az], [bw, bx, by, bz]);
-        // Where the evaluation does not apply, the squared wedge may be
-        // zero (identical pairs) or NaN: in its place the smallest normal
-        // f32, so that the divisions below never divide by zero (which
-        // would raise the divide-by-zero exception that slerp itself does
-        // not, a SIGFPE where a program unmasks it). Where it applies the
-        // wedge is at least SQUARES_UNDERFLOW, 2^-100, and stays as it is.
-        let wedge = I::max(wedge, I::splat(f32::MIN_POSITIVE));
-        (dots[j], wedges[j]) = (dot([aw, ax, ay, az], [bw, bx, by, bz]), wedge);
+        // Where the evaluation does not apply, the squared norms may be
+        // zero (a zero quaternion) or NaN: in their place the smallest
+        // normal f32, so that the division below never divides by zero
+        // (which would raise the divide-by-zero exception that slerp
+        // itself does not, a SIGFPE where a program unmasks it). Where it
+        // applies they are at least 2^-50 (the squared wedge, at least
+        // SQUARES_UNDERFLOW = 2^-100, is at most their product) and stay
+        // as they are.
+        let tiny = I::splat(f32::MIN_POSITIVE);
+        (norms[j], other_norms[j]) = (I::max(n2, tiny), I::max(on2, tiny));
+        let dot = dot([aw, ax, ay, az], [bw, bx, by, bz]);
+        (dots[j], wedges[j]) = (dot, wedge);
     }
 
-    // The f64 part, register by register at each stage: w, x and x * x (of
-    // |x| in atan2_of_root and of x in Pair::slerp: the same).
+    // Pair::arc, register by register at each stage: the tangent of the
+    // half angle squared (one division, each register on its own, so that
+    // none waits for another's), the polynomial, phi^2 and phi / sin(phi).
     let zero = splat(0.0);
-    let (mut w, mut x2) = ([zero; CHAINS], [zero; CHAINS]);
+    let (mut w, mut d) = ([zero; CHAINS], [zero; CHAINS]);
     for j in 0..BLOCKS {
-        let (wedge, dot) = (I::halves(wedges[j]), I::halves(dots[j]));
+        let (n2, on2) = (I::halves(norms[j]), I::halves(other_norms[j]));
+        let (wedge, size) = (I::halves(wedges[j]), I::halves(I::and_not(sign32, dots[j])));
         for h in 0..2 {
-            (w[2 * j + h], x2[2 * j + h]) = (wedge[h], mul_d(dot[h], dot[h]));
+            let m = mul_d(splat(0.5), add_d(n2[h], on2[h]));
+            (w[2 * j + h], d[2 * j + h]) = (wedge[h], add_d(m, size[h]));
         }
     }
-    // atan2_of_root(w, |x|): the smaller of w and x^2 over the larger, its
-    // square root in f32 (each register on its own, so that none waits for
-    // another's division), the polynomial, the quarter turn.
-    let mut z = [zero; CHAINS];
+    let mut t2 = [zero; CHAINS];
     for k in 0..CHAINS {
-        let below = I::lt_d(w[k], x2[k]);
-        z[k] = div_d(
-            I::select_d(below, w[k], x2[k]),
-            I::select_d(below, x2[k], w[k]),
-        );
+        t2[k] = div_d(w[k], mul_d(d[k], d[k]));
     }
-    let mut phi = [zero; CHAINS];
+    let (mut phi2, mut ratio) = ([zero; CHAINS], [zero; CHAINS]);
     for k in 0..CHAINS {
-        let (z, u) = (z[k], I::root(z[k]));
+        let s = t2[k];
         let c = ATAN_F64;
-        let z2 = mul_d(z, z);
-        let z4 = mul_d(z2, z2);
+        let s2 = mul_d(s, s);
+        let s4 = mul_d(s2, s2);
         let low = add_d(
-            add_d(splat(c[0]), mul_d(z, splat(c[1]))),
-            mul_d(z2, add_d(splat(c[2]), mul_d(z, splat(c[3])))),
+            add_d(splat(c[0]), mul_d(s, splat(c[1]))),
+            mul_d(s2, add_d(splat(c[2]), mul_d(s, splat(c[3])))),
         );
         let high = add_d(
-            add_d(splat(c[4]), mul_d(z, splat(c[5]))),
-            mul_d(z2, add_d(splat(c[6]), mul_d(z, splat(c[7])))),
+            add_d(splat(c[4]), mul_d(s, splat(c[5]))),
+            mul_d(s2, add_d(splat(c[6]), mul_d(s, splat(c[7])))),
         );
-        let p = add_d(low, mul_d(z4, high));
-        let a = add_d(u, mul_d(u, mul_d(z, p)));
-        let d = sub_d(x2[k], w[k]);
-        let half = splat(0.5);
-        let quarter = sub_d(half, I::or_d(half, I::and_d(d, sign64)));
-        let flipped = I::xor_d(a, I::and_d(d, sign64));
-        phi[k] = add_d(mul_d(quarter, splat(core::f64::consts::FRAC_PI_2)), flipped);
+        let p = add_d(low, mul_d(s4, high));
+        let h = add_d(splat(1.0), mul_d(s, p));
+        phi2[k] = mul_d(mul_d(splat(4.0), s), mul_d(h, h));
+        ratio[k] = mul_d(h, add_d(splat(1.0), s));
     }
-    // Pair::slerp: r = 1 / sin(phi) from the wedge and the dot product (its
-    // square root in f32), the two sines.
-    let mut r = [zero; CHAINS];
-    for k in 0..CHAINS {
-        let limit = splat(INVERSE_SINE_SQUARED_LIMIT);
-        r[k] = I::root(I::min_d(div_d(add_d(w[k], x2[k]), w[k]), limit));
-    }
-    let sine = |x| {
-        let s = SIN_F64;
-        let s2 = mul_d(x, x);
-        let p = add_d(
-            add_d(splat(s[0]), mul_d(s2, splat(s[1]))),
-            mul_d(mul_d(s2, s2), add_d(splat(s[2]), mul_d(s2, splat(s[3])))),
+    // Pair::slerp: each share of the arc times phi / sin(phi) times the
+    // sinc of its angle.
+    let sinc = |s| {
+        let c = SIN_F64;
+        let q = add_d(
+            add_d(splat(c[0]), mul_d(s, splat(c[1]))),
+            mul_d(mul_d(s, s), add_d(splat(c[2]), mul_d(s, splat(c[3])))),
         );
-        add_d(x, mul_d(mul_d(x, s2), p))
+        add_d(splat(1.0), mul_d(s, q))
     };
     let alpha = splat(f64::from(alpha));
     let rest = sub_d(splat(1.0), alpha);
+    let (alpha2, rest2) = (mul_d(alpha, alpha), mul_d(rest, rest));
     let (mut c0, mut c1) = ([zero; CHAINS], [zero; CHAINS]);
     for k in 0..CHAINS {
-        c0[k] = mul_d(sine(mul_d(rest, phi[k])), r[k]);
-        c1[k] = mul_d(sine(mul_d(alpha, phi[k])), r[k]);
+        c0[k] = mul_d(mul_d(rest, ratio[k]), sinc(mul_d(rest2, phi2[k])));
+        c1[k] = mul_d(mul_d(alpha, ratio[k]), sinc(mul_d(alpha2, phi2[k])));
     }
 
     // The weighted sums, to the rotations of `o`; the done bits.
     let mut done = 0;
-    let small = splat(SMALL_ANGLE_F64);
+    let small = splat(SMALL_ANGLE_SQUARED_F64);
     let half = I::LANES / 2;
     for j in 0..BLOCKS {
         let c0 = I::join(c0[2 * j], c0[2 * j + 1]);
@@ -343,8 +322,8 @@ fn evaluate<I: Isa, T: Slerped, const BLOCKS: usize, const CHAINS: usize, const 
         let c1 = I::or(I::and_not(sign32, c1), I::and(sign32, dots[j]));
         let weigh = |i: usize| add(mul(c0, a[j][i]), mul(c1, b[j][i]));
         I::store([weigh(0), weigh(1), weigh(2), weigh(3)], &mut o[lanes(j)]);
-        let past_small = I::bits_d(I::gt_d(phi[2 * j], small))
-            | (I::bits_d(I::gt_d(phi[2 * j + 1], small)) << half);
+        let past_small = I::bits_d(I::gt_d(phi2[2 * j], small))
+            | (I::bits_d(I::gt_d(phi2[2 * j + 1], small)) << half);
         let lanes_done = applies[j] & past_small;
         for (lane, pair) in I::PAIR_OF_LANE.into_iter().enumerate().take(I::LANES) {
             done |= ((lanes_done >> lane) & 1) << (I::LANES * j + pair);
