@@ -236,10 +236,10 @@ mod vec;
 #[doc(hidden)]
 pub mod kani_kernels {
     pub use crate::float::{atan2, sin_cos, sqrt};
-    /// slerp's f64 angle and sine, which `proofs/gappa/angle_f64.g`,
-    /// `angle_f64_above.g` and `sin_f64.g` model.
+    /// slerp's f64 arc and `sin(x) / x`, which `proofs/gappa/arc_f64.g`
+    /// and `sinc_f64.g` model.
     #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-    pub use crate::quat::kernels_f64::{atan2_of_root, sin_to_quarter_turn};
+    pub use crate::quat::kernels_f64::{slerp_arc, slerp_sinc};
 }
 
 pub use matrix::Matrix4;

@@ -19,11 +19,10 @@ use super::Quat;
 mod in_f32;
 #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 mod in_f64;
-// The angle and sine kernels (`atan2_of_root`, `sin_to_quarter_turn`) are
-// what the Gappa models of proofs/gappa/ prove and the Kani harnesses stub;
-// the f64 evaluation takes only their polynomials (`ATAN`, `SIN`).
+// The polynomials of the f64 evaluation (`ATAN`, `SIN`), and the arc and
+// `sin(x) / x` of `in_f64.rs` shown to the Gappa models' correspondence test
+// of proofs/ (under `kani_kernels`).
 #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-#[cfg_attr(not(any(kani, feature = "kernel-contracts")), allow(dead_code))]
 pub(crate) mod kernels_f64;
 mod slice;
 

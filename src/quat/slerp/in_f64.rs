@@ -159,7 +159,7 @@ fn atan_polynomial(s: f64) -> f64 {
 /// `sin(x) / x` from `s = x^2`, for `x` in [0, pi/2]: `1 + s Q(s)` with
 /// the polynomial [`SIN`] in pairs, as the sine kernel evaluates it.
 #[inline(always)]
-fn sinc(s: f64) -> f64 {
+pub(super) fn sinc(s: f64) -> f64 {
     let q = (SIN[0] + s * SIN[1]) + (s * s) * (SIN[2] + s * SIN[3]);
     1.0 + s * q
 }
