@@ -139,7 +139,7 @@ pub const SIN_COS_MAX_ULP: f32 = 1.25; // 0.985 at 2.3279488e23
 /// 1.6959e-8 (`atan_f64.sollya`), which `phi^2` takes twice, and Gappa the
 /// f64 rounding. Swept: every f32 `t2` of [2^-30, 1]
 /// (`exhaustive_kernel_sweep_f64` in `quat/slerp/kernels_f64.rs`).
-pub const PHI_SQUARED_F64_MAX_REL_ERROR: f32 = 3.4e-8;
+pub const PHI_SQUARED_F64_MAX_REL_ERROR: f32 = 3.4e-8; // 3.340e-8 at t2 = 0.8781245 swept, 3.392e-8 proven
 /// Relative error of `phi / sin(phi)` from the arc of slerp's f64
 /// evaluation (`Pair::arc`), on the domain of
 /// [`PHI_SQUARED_F64_MAX_REL_ERROR`] and against the exact value for the
@@ -148,7 +148,7 @@ pub const PHI_SQUARED_F64_MAX_REL_ERROR: f32 = 3.4e-8;
 /// Known: proven: `proofs/gappa/arc_f64.g` proves 1.696e-8, the
 /// approximation error of `1 + t2 P(t2)` (Sollya, 1.6959e-8) and the f64
 /// rounding. Swept as [`PHI_SQUARED_F64_MAX_REL_ERROR`].
-pub const PHI_OVER_SINE_F64_MAX_REL_ERROR: f32 = 1.7e-8;
+pub const PHI_OVER_SINE_F64_MAX_REL_ERROR: f32 = 1.7e-8; // 1.670e-8 at t2 = 0.87812424 swept, 1.696e-8 proven
 /// Relative error of `sin(x) / x` as slerp's f64 evaluation takes it
 /// (`quat/slerp/in_f64.rs`, `sinc`, `1 + s Q(s)` of `s = x^2`), for every
 /// f64 `s` in [0, 2.4676] (`x` up to pi/2 and a little beyond).
@@ -157,7 +157,23 @@ pub const PHI_OVER_SINE_F64_MAX_REL_ERROR: f32 = 1.7e-8;
 /// the approximation error by 6.0966e-9 (`sinc_f64.sollya`), Gappa the f64
 /// evaluation by 2.7e-16. Swept: every f32 `x` of [2^-30, pi/2]
 /// (`exhaustive_kernel_sweep_f64`).
-pub const SINC_F64_MAX_REL_ERROR: f32 = 6.1e-9;
+pub const SINC_F64_MAX_REL_ERROR: f32 = 6.1e-9; // 6.054e-9 at x = 1.4982078 swept, 6.0967e-9 proven
+/// Relative error of slerp's coefficients `sin((1 - alpha) phi) / sin(phi)`
+/// and `sin(alpha phi) / sin(phi)` in its f64 evaluation
+/// (`quat/slerp/in_f64.rs`, `Arc::coefficients`) before their rounding to
+/// f32, for every f32 `alpha` in (0, 1] and the `phi` of the arc's `t2`
+/// (on the domain of [`PHI_SQUARED_F64_MAX_REL_ERROR`], `phi^2` above
+/// 2^-24, where the evaluation applies): the arc's errors, `sin(x) / x`'s
+/// and the rounding of the coefficients' own operations.
+///
+/// Known: proven: `proofs/gappa/coefficient_f64.g` (`c1`) and
+/// `coefficient_rest_f64.g` (`c0`) prove 4.74e-8 each, taking
+/// `arc_f64.g`'s proven bounds and `sinc_f64.sollya`'s approximation error
+/// as hypotheses (and `phi^2` at most 2.4676, which follows from the arc's
+/// domain by a calculation). Sampled: every 15,952nd f32 `t2` of
+/// [2^-25, 1] with 13 values of `alpha` (`coefficient_sweep`, every f32
+/// `t2` in `exhaustive_kernel_sweep_f64`).
+pub const SLERP_COEFFICIENT_F64_MAX_REL_ERROR: f32 = 4.8e-8;
 /// Absolute error, in radians, of the atan2 kernel (`sweep_atan2`).
 ///
 /// Known: measured: the largest error over the draws in its doc, rounded up.

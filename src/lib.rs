@@ -236,10 +236,11 @@ mod vec;
 #[doc(hidden)]
 pub mod kani_kernels {
     pub use crate::float::{atan2, sin_cos, sqrt};
-    /// slerp's f64 arc and `sin(x) / x`, which `proofs/gappa/arc_f64.g`
-    /// and `sinc_f64.g` model.
+    /// slerp's f64 arc, `sin(x) / x` and coefficients, which
+    /// `proofs/gappa/arc_f64.g`, `sinc_f64.g`, `coefficient_f64.g` and
+    /// `coefficient_rest_f64.g` model.
     #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
-    pub use crate::quat::kernels_f64::{slerp_arc, slerp_sinc};
+    pub use crate::quat::kernels_f64::{slerp_arc, slerp_coefficients, slerp_sinc};
 }
 
 pub use matrix::Matrix4;

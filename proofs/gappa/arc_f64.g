@@ -26,7 +26,8 @@
 # the inputs' error, not part of the bounds.
 #
 # Proven: phi^2 within 3.392e-8 and phi / sin(phi) within 1.696e-8 of
-# their exact values for the computed t2, relative.
+# their exact values for the computed t2, relative; phi / sin(phi) in
+# [0.4, 2.1] (coefficient_f64.g's hypotheses).
 #
 #! sollya atan_f64.sollya 1.6959e-8
 #! bound PHI_SQUARED_F64_MAX_REL_ERROR 3.392e-8 relative error of the arc's phi^2 for its t2
@@ -60,7 +61,8 @@ eh = (h - H) / H;
 { t2 in [1b-170, 1.0001] /\ (H - At) / At in [-1.6959e-8, 1.6959e-8]
   ->
   (phi2 - Phi2) / Phi2 in [-3.392e-8, 3.392e-8] /\
-  (pos - Pos) / Pos in [-1.696e-8, 1.696e-8]
+  (pos - Pos) / Pos in [-1.696e-8, 1.696e-8] /\
+  pos in [0.4, 2.1]
 }
 
 (h - H) / H -> ((h - (1 + t2 * p)) + t2 * (p - P)) / H;

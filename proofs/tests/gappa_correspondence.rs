@@ -599,6 +599,57 @@ fn f64_arc_is_arc_f64_g() {
     }
 }
 
+/// coefficient_rest_f64.g (`c0`) and coefficient_f64.g (`c1`) on the arcs
+/// of drawn pairs (arc_f64.g's outputs, so that the chain from the pair to
+/// the coefficients is the models' throughout) and on raw arcs, with `alpha`
+/// drawn in (0, 1] and at its edges.
+#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+#[test]
+fn f64_coefficients_are_coefficient_f64_g() {
+    let arc = model("arc_f64");
+    let share = model("coefficient_f64");
+    let rest = model("coefficient_rest_f64");
+    for m in [&share, &rest] {
+        assert_eq!(m.inputs, ["alpha", "phi2", "pos"]);
+    }
+    let edges = [
+        f32::from_bits(1),
+        1e-30,
+        1e-7,
+        0.5,
+        1.0 - f32::EPSILON / 2.0,
+        1.0,
+    ];
+    for (i, mut d) in draws() {
+        let (phi2, pos) = if i % 2 == 0 {
+            let (a, b) = (d.unit_quat(), d.unit_quat());
+            let (n2, on2, dot) = (a.norm_squared(), b.norm_squared(), a.dot(b));
+            let wedge = (n2 * on2 - dot * dot).max(1e-30);
+            let out = arc.run(&[n2, on2, dot.abs(), wedge].map(f64::from));
+            (out["phi2"], out["pos"])
+        } else {
+            let phi = f64::from(d.uniform(0.0, core::f32::consts::FRAC_PI_2));
+            let phi2 = phi * phi + f64::from(d.uniform(-1e-9, 1e-9));
+            (phi2, phi / phi.sin().max(1e-9))
+        };
+        let alpha = if i % 5 == 0 {
+            edges[d.below(edges.len())]
+        } else {
+            d.uniform(0.0, 1.0)
+        };
+        let inputs = [f64::from(alpha), phi2, pos];
+        let [c0, c1] = kani_kernels::slerp_coefficients(phi2, pos, alpha);
+        for (m, code) in [(&rest, c0), (&share, c1)] {
+            let model = m.run(&inputs)["c"];
+            assert!(
+                same_f64(model, code),
+                "{}: {model:e} in the model, {code:e} in the code, for {inputs:?}",
+                m.name
+            );
+        }
+    }
+}
+
 /// The evaluator itself: its notations and its rounding.
 #[test]
 fn evaluator_reads_the_notations_and_rounds_each_operation() {

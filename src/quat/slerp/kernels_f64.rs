@@ -63,11 +63,26 @@ pub fn slerp_sinc(s: f64) -> f64 {
     super::in_f64::sinc(s)
 }
 
+/// slerp's coefficients before their rounding to f32
+/// (`Arc::coefficients`), `[c0, c1]`, from the arc's `phi^2` and
+/// `phi / sin(phi)`, which `proofs/gappa/coefficient_rest_f64.g` (`c0`) and
+/// `coefficient_f64.g` (`c1`) model.
+#[cfg(any(kani, feature = "kernel-contracts"))]
+#[must_use]
+pub fn slerp_coefficients(phi_squared: f64, phi_over_sine: f64, alpha: f32) -> [f64; 2] {
+    super::in_f64::Arc {
+        phi_squared,
+        phi_over_sine,
+    }
+    .coefficients(alpha)
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::in_f64::{sinc, Pair};
     use crate::accuracy::{
         PHI_OVER_SINE_F64_MAX_REL_ERROR, PHI_SQUARED_F64_MAX_REL_ERROR, SINC_F64_MAX_REL_ERROR,
+        SLERP_COEFFICIENT_F64_MAX_REL_ERROR,
     };
     use crate::float::sweep::{floats, SAMPLE_STEP};
     use core::f32::consts::FRAC_PI_2;
@@ -136,6 +151,65 @@ mod tests {
         );
     }
 
+    /// The largest relative error of slerp's coefficients before their
+    /// rounding to f32, over every `step`-th f32 `t2` of [2^-25, 1] (the
+    /// arc as in [`arc_sweep`], `phi^2` above 2^-24) and shares from the
+    /// smallest f32 to 1, against `sin((1 - alpha) phi) / sin(phi)` and
+    /// `sin(alpha phi) / sin(phi)` in `std`'s f64.
+    fn coefficient_sweep(step: usize) -> (f64, f32, f32) {
+        let alphas = [
+            f32::from_bits(1),
+            1e-30,
+            1e-7,
+            1e-3,
+            0.1,
+            0.25,
+            1.0 / 3.0,
+            0.5,
+            0.7,
+            0.9,
+            0.999,
+            1.0 - f32::EPSILON / 2.0,
+            1.0,
+        ];
+        let mut worst = (0.0, 0.0, 0.0);
+        for t2 in floats(2.9802322e-8, 1.0, step) {
+            let phi = 2.0 * f64::from(t2).sqrt().atan();
+            let arc = Pair {
+                n2: 1.0,
+                on2: 1.0,
+                dot: 0.0,
+                wedge: t2,
+            }
+            .arc();
+            for alpha in alphas {
+                let [c0, c1] = arc.coefficients(alpha);
+                let share = f64::from(alpha);
+                let exact = [(1.0 - share) * phi, share * phi].map(|x| x.sin() / phi.sin());
+                for (c, e) in [c0, c1].into_iter().zip(exact) {
+                    let err = if e == 0.0 {
+                        c.abs()
+                    } else {
+                        ((c - e) / e).abs()
+                    };
+                    if err > worst.0 {
+                        worst = (err, t2, alpha);
+                    }
+                }
+            }
+        }
+        worst
+    }
+
+    #[test]
+    fn coefficients_are_within_their_bound_on_a_sample() {
+        let (err, t2, alpha) = coefficient_sweep(16 * SAMPLE_STEP);
+        assert!(
+            err <= f64::from(SLERP_COEFFICIENT_F64_MAX_REL_ERROR),
+            "{err:e} at t2 = {t2}, alpha = {alpha}"
+        );
+    }
+
     /// The hypothesis of `proofs/gappa/arc_f64.g`: the arc's quotient
     /// `t2 = wedge / (m + |dot|)^2`, with `m` the mean of the squared norms,
     /// stays below 1.0001 (its exact value, `tan^2(phi / 2)`, is at most 1)
@@ -176,11 +250,14 @@ mod tests {
     fn exhaustive_kernel_sweep_f64() {
         let (sinc_error, x) = sinc_sweep(1);
         let [(square, t), (ratio, u)] = arc_sweep(1);
+        let (coefficient, v, alpha) = coefficient_sweep(1);
+        std::println!("coefficients: {coefficient:e} at t2 = {v}, alpha = {alpha}");
         std::println!(
             "sinc: {sinc_error:e} at {x}; phi^2: {square:e} at t2 = {t}; phi / sin(phi): {ratio:e} at t2 = {u}"
         );
         assert!(sinc_error <= f64::from(SINC_F64_MAX_REL_ERROR));
         assert!(square <= f64::from(PHI_SQUARED_F64_MAX_REL_ERROR));
         assert!(ratio <= f64::from(PHI_OVER_SINE_F64_MAX_REL_ERROR));
+        assert!(coefficient <= f64::from(SLERP_COEFFICIENT_F64_MAX_REL_ERROR));
     }
 }
