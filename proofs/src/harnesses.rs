@@ -22,7 +22,7 @@
 //! meets the contracts (which `src/float.rs` checks the crate's kernels
 //! meet), and nothing about the angle. `slerp`'s unit norm needs accurate
 //! angles, so its harnesses keep the real kernels: polynomials (on
-//! x86-64, where Kani runs, the f64 angle and sines of `quat/slerp/kernels_f64.rs`
+//! x86-64, where Kani runs, the f64 arc and `sin(x) / x` of `quat/slerp/in_f64.rs`
 //! for `alpha` in (0, 1]), and for extrapolation beyond 3 pi/4 an argument
 //! reduction in integers that branches.
 //!
