@@ -560,15 +560,18 @@ fn f64_sinc_is_sinc_f64_g() {
     }
 }
 
-/// arc_f64.g on the squared norms, dot product and squared wedge of unit
-/// pairs (the wedge from the f32 difference of the products), of pairs at
-/// every scale the evaluation takes (squared norms up to 2^32, within 1e-6
-/// of each other), and of raw values; the model takes `|a . b|`.
+/// arc_quotient_f64.g and then arc_f64.g on its `t2`, on the squared
+/// norms, dot product and squared wedge of unit pairs (the wedge from the
+/// f32 difference of the products), of pairs at every scale the evaluation
+/// takes (squared norms up to 2^32, within 1e-6 of each other), and of raw
+/// values; the models take `|a . b|`.
 #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 #[test]
-fn f64_arc_is_arc_f64_g() {
+fn f64_arc_is_arc_quotient_f64_g_then_arc_f64_g() {
+    let quotient = model("arc_quotient_f64");
     let m = model("arc_f64");
-    assert_eq!(m.inputs, ["n2", "on2", "dot", "wedge"]);
+    assert_eq!(quotient.inputs, ["n2", "on2", "dot", "wedge"]);
+    assert_eq!(m.inputs, ["t2"]);
     for (i, mut d) in draws() {
         let [n2, on2, dot, wedge] = match i % 3 {
             0 => {
@@ -586,7 +589,8 @@ fn f64_arc_is_arc_f64_g() {
             }
             _ => core::array::from_fn(|_| d.f32_mixed()),
         };
-        let out = m.run(&[n2, on2, dot.abs(), wedge].map(f64::from));
+        let t2 = quotient.run(&[n2, on2, dot.abs(), wedge].map(f64::from))["t2"];
+        let out = m.run(&[t2]);
         let (phi_squared, phi_over_sine) = kani_kernels::slerp_arc(n2, on2, dot, wedge);
         for (name, code) in [("phi2", phi_squared), ("pos", phi_over_sine)] {
             assert!(
@@ -600,12 +604,13 @@ fn f64_arc_is_arc_f64_g() {
 }
 
 /// coefficient_rest_f64.g (`c0`) and coefficient_f64.g (`c1`) on the arcs
-/// of drawn pairs (arc_f64.g's outputs, so that the chain from the pair to
-/// the coefficients is the models' throughout) and on raw arcs, with `alpha`
-/// drawn in (0, 1] and at its edges.
+/// of drawn pairs (arc_quotient_f64.g's and arc_f64.g's outputs, so that
+/// the chain from the pair to the coefficients is the models' throughout)
+/// and on raw arcs, with `alpha` drawn in (0, 1] and at its edges.
 #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 #[test]
 fn f64_coefficients_are_coefficient_f64_g() {
+    let quotient = model("arc_quotient_f64");
     let arc = model("arc_f64");
     let share = model("coefficient_f64");
     let rest = model("coefficient_rest_f64");
@@ -625,7 +630,8 @@ fn f64_coefficients_are_coefficient_f64_g() {
             let (a, b) = (d.unit_quat(), d.unit_quat());
             let (n2, on2, dot) = (a.norm_squared(), b.norm_squared(), a.dot(b));
             let wedge = (n2 * on2 - dot * dot).max(1e-30);
-            let out = arc.run(&[n2, on2, dot.abs(), wedge].map(f64::from));
+            let t2 = quotient.run(&[n2, on2, dot.abs(), wedge].map(f64::from))["t2"];
+            let out = arc.run(&[t2]);
             (out["phi2"], out["pos"])
         } else {
             let phi = f64::from(d.uniform(0.0, core::f32::consts::FRAC_PI_2));
