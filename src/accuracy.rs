@@ -167,13 +167,13 @@ pub const SINC_F64_MAX_REL_ERROR: f32 = 6.1e-9; // 6.054e-9 at x = 1.4982078 swe
 /// and the rounding of the coefficients' own operations.
 ///
 /// Known: proven: `proofs/gappa/coefficient_f64.g` (`c1`) and
-/// `coefficient_rest_f64.g` (`c0`) prove 4.74e-8 each, taking
+/// `coefficient_rest_f64.g` (`c0`) prove 4.09e-8 each, taking
 /// `arc_f64.g`'s proven bounds and `sinc_f64.sollya`'s approximation error
 /// as hypotheses (and `phi^2` at most 2.4676, which follows from the arc's
 /// domain by a calculation). Sampled: every 15,952nd f32 `t2` of
 /// [2^-25, 1] with 13 values of `alpha` (`coefficient_sweep`; every 64th f32
 /// `t2` in `exhaustive_kernel_sweep_f64`).
-pub const SLERP_COEFFICIENT_F64_MAX_REL_ERROR: f32 = 4.8e-8; // 2.169e-8 at t2 = 0.57344437, alpha = 1/3 sampled, 4.74e-8 proven
+pub const SLERP_COEFFICIENT_F64_MAX_REL_ERROR: f32 = 4.1e-8; // 2.169e-8 at t2 = 0.57344437, alpha = 1/3 sampled, 4.09e-8 proven
 /// Absolute error, in radians, of the atan2 kernel (`sweep_atan2`).
 ///
 /// Known: measured: the largest error over the draws in its doc, rounded up.

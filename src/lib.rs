@@ -157,7 +157,7 @@
 //!
 //! | feature | what it adds |
 //! | --- | --- |
-//! | (default) | f32 atan2, sine and cosine kernels, each within 1 to 1.6 ulp (no f64 arithmetic, so no soft-float code on a Cortex-M4F); on x86-64 and AArch64 only, where f64 costs what f32 does, slerp's arc and coefficients in f64 (one polynomial each, the coefficients proven within 4.74e-8 before their rounding to f32); the processor's square root instruction on Arm hard-float targets, x86-64 and AArch64; libm for the rest |
+//! | (default) | f32 atan2, sine and cosine kernels, each within 1 to 1.6 ulp (no f64 arithmetic, so no soft-float code on a Cortex-M4F); on x86-64 and AArch64 only, where f64 costs what f32 does, slerp's arc and coefficients in f64 (one polynomial each, the coefficients proven within 4.09e-8 before their rounding to f32); the processor's square root instruction on Arm hard-float targets, x86-64 and AArch64; libm for the rest |
 //! | `defmt` | `defmt::Format` for every public type, for logging on target |
 //! | `mint` | `From` conversions to and from `mint` types (interop with glam, nalgebra, cgmath through `mint`), and `mint::IntoMint` for generic code |
 //! | `serde` | `Serialize` and `Deserialize` for every public type, as structs with the Rust field names (a `Quat` is `{x, y, z, w}`); the attitude filter with its whole state, so that a learned gyro bias can be saved and restored |
