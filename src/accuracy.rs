@@ -132,23 +132,53 @@ pub const SIN_COS_NARROW_MAX_ULP: f32 = 1.0; // 0.858 at 2.3555665
 ///
 /// Known: swept: every finite f32 beyond 3 pi/4 (`exhaustive_kernel_sweep`).
 pub const SIN_COS_MAX_ULP: f32 = 1.25; // 0.985 at 2.3279488e23
-/// Relative error of the f64 angle kernel of slerp on x86-64 and AArch64
-/// (`quat/slerp/kernels_f64.rs`): pairs `(t, 1)` and `(1, t)` for every f32 `t` in
-/// [2^-30, 1].
+/// Relative error of `phi^2` from the arc of slerp's f64 evaluation on
+/// x86-64 and AArch64 (`quat/slerp/in_f64.rs`, `Pair::arc`), against the
+/// exact `phi^2 = 4 atan^2(sqrt(t2))` of the quotient `t2 = tan^2(phi / 2)`
+/// that the evaluation computes in f64, for `t2` in [2^-170, 1.0001]. The
+/// error of `t2` itself (from the f32 wedge, dot product and squared norms
+/// of the inputs) is the inputs' and is not part of it.
 ///
-/// Known: swept: every f32 `t` of [2^-30, 1] (`exhaustive_kernel_sweep` in
-/// `quat/slerp/kernels_f64.rs`). `proofs/gappa/angle_f64.g` proves 7.64e-8 for the
-/// pairs `(t, 1)` and `angle_f64_above.g` 1.337e-7 for the pairs `(1, t)`
-/// (looser), with Sollya's bound of the polynomial's approximation error
-/// (1.67e-8, `angle_f64.sollya`).
-pub const ANGLE_F64_MAX_REL_ERROR: f32 = 9.0e-8; // 7.552e-8 at t = 0.2502991
-/// Relative error of the f64 sine kernel of slerp on x86-64 and AArch64
-/// (`quat/slerp/kernels_f64.rs`), for every f32 in [2^-30, pi/2].
+/// Known: proven: `proofs/gappa/arc_f64.g` proves 3.392e-8: Sollya bounds
+/// the approximation error of `1 + t2 P(t2)` against `atan(t) / t` by
+/// 1.6959e-8 (`atan_f64.sollya`), which `phi^2` takes twice, and Gappa the
+/// f64 rounding. Swept: every f32 `t2` of [2^-30, 1]
+/// (`exhaustive_kernel_sweep_f64` in `quat/slerp/kernels_f64.rs`).
+pub const PHI_SQUARED_F64_MAX_REL_ERROR: f32 = 3.4e-8; // 3.340e-8 at t2 = 0.8781245 swept, 3.392e-8 proven
+/// Relative error of `phi / sin(phi)` from the arc of slerp's f64
+/// evaluation (`Pair::arc`), on the domain of
+/// [`PHI_SQUARED_F64_MAX_REL_ERROR`] and against the exact value for the
+/// same `t2`.
 ///
-/// Known: proven: `proofs/gappa/sin_f64.g` proves 6.057e-9 for every f64 of
-/// [9.29e-10, 1.5708]: Sollya bounds the polynomial's approximation error by
-/// 6.0554e-9 (`sin_f64.sollya`), Gappa the f64 evaluation by 5.01e-16.
-pub const SIN_F64_MAX_REL_ERROR: f32 = 6.1e-9; // 6.054e-9 at 1.4982117 swept, 6.057e-9 proven
+/// Known: proven: `proofs/gappa/arc_f64.g` proves 1.696e-8, the
+/// approximation error of `1 + t2 P(t2)` (Sollya, 1.6959e-8) and the f64
+/// rounding. Swept as [`PHI_SQUARED_F64_MAX_REL_ERROR`].
+pub const PHI_OVER_SINE_F64_MAX_REL_ERROR: f32 = 1.7e-8; // 1.670e-8 at t2 = 0.87812424 swept, 1.696e-8 proven
+/// Relative error of `sin(x) / x` as slerp's f64 evaluation takes it
+/// (`quat/slerp/in_f64.rs`, `sinc`, `1 + s Q(s)` of `s = x^2`), for every
+/// f64 `s` in [0, 2.4676] (`x` up to pi/2 and a little beyond).
+///
+/// Known: proven: `proofs/gappa/sinc_f64.g` proves 6.0967e-9: Sollya bounds
+/// the approximation error by 6.0966e-9 (`sinc_f64.sollya`), Gappa the f64
+/// evaluation by 2.7e-16. Swept: every f32 `x` of [2^-30, pi/2]
+/// (`exhaustive_kernel_sweep_f64`).
+pub const SINC_F64_MAX_REL_ERROR: f32 = 6.1e-9; // 6.054e-9 at x = 1.4982078 swept, 6.0967e-9 proven
+/// Relative error of slerp's coefficients `sin((1 - alpha) phi) / sin(phi)`
+/// and `sin(alpha phi) / sin(phi)` in its f64 evaluation
+/// (`quat/slerp/in_f64.rs`, `Arc::coefficients`) before their rounding to
+/// f32, for every f32 `alpha` in (0, 1] and the `phi` of the arc's `t2`
+/// (on the domain of [`PHI_SQUARED_F64_MAX_REL_ERROR`], `phi^2` above
+/// 2^-24, where the evaluation applies): the arc's errors, `sin(x) / x`'s
+/// and the rounding of the coefficients' own operations.
+///
+/// Known: proven: `proofs/gappa/coefficient_f64.g` (`c1`) and
+/// `coefficient_rest_f64.g` (`c0`) prove 4.09e-8 each, taking
+/// `arc_f64.g`'s proven bounds and `sinc_f64.sollya`'s approximation error
+/// as hypotheses (and `phi^2` at most 2.4676, which follows from the arc's
+/// domain by a calculation). Sampled: every 15,952nd f32 `t2` of
+/// [2^-25, 1] with 13 values of `alpha` (`coefficient_sweep`; every 64th f32
+/// `t2` in `exhaustive_kernel_sweep_f64`).
+pub const SLERP_COEFFICIENT_F64_MAX_REL_ERROR: f32 = 4.1e-8; // 2.169e-8 at t2 = 0.57344437, alpha = 1/3 sampled, 4.09e-8 proven
 /// Absolute error, in radians, of the atan2 kernel (`sweep_atan2`).
 ///
 /// Known: measured: the largest error over the draws in its doc, rounded up.

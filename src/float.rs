@@ -12,9 +12,10 @@
 //! | `float/sqrt.rs` | the processor's square root instruction (Arm hard-float `vsqrt.f32`, x86-64 `sqrtss`, AArch64 `fsqrt`, the last two in a form a loop can vectorize), libm's `sqrtf` elsewhere | 0.5 ulp |
 //! | `float/norm.rs` | the overflow- and underflow-free sum of squares behind every `norm` and `normalize` | 2 ulp |
 //!
-//! The one exception is slerp's own pair of f64 kernels, its angle and
-//! sines on x86-64 and AArch64, which live with slerp
-//! (`quat/slerp/kernels_f64.rs`): nothing else evaluates them. Nothing
+//! The one exception is slerp's own f64 polynomials, its arc and
+//! `sin(x) / x` on x86-64 and AArch64, which live with slerp
+//! (`quat/slerp/kernels_f64.rs`, `in_f64.rs`): nothing else evaluates
+//! them. Nothing
 //! here is evaluated in f64, so on a Cortex-M4F (single-precision FPU) no
 //! soft-float helper is linked. Their
 //! coefficients come from `tools/minimax.py` (Remez exchange in multiple

@@ -161,7 +161,7 @@
 //!
 //! | feature | what it adds |
 //! | --- | --- |
-//! | (default) | f32 atan2, sine and cosine kernels, each within 1 to 1.6 ulp (no f64 arithmetic, so no soft-float code on a Cortex-M4F); on x86-64 and AArch64 only, where f64 costs what f32 does, slerp's angle and sines in f64 (one polynomial each, below a tenth of an f32 ulp but the angle's square root); the processor's square root instruction on Arm hard-float targets, x86-64 and AArch64; libm for the rest |
+//! | (default) | f32 atan2, sine and cosine kernels, each within 1 to 1.6 ulp (no f64 arithmetic, so no soft-float code on a Cortex-M4F); on x86-64 and AArch64 only, where f64 costs what f32 does, slerp's arc and coefficients in f64 (one polynomial each, the coefficients proven within 4.09e-8 before their rounding to f32); the processor's square root instruction on Arm hard-float targets, x86-64 and AArch64; libm for the rest |
 //! | `defmt` | `defmt::Format` for every public type, for logging on target |
 //! | `mint` | `From` conversions to and from `mint` types (interop with glam, nalgebra, cgmath through `mint`), and `mint::IntoMint` for generic code |
 //! | `serde` | `Serialize` and `Deserialize` for every public type, as structs with the Rust field names (a `Quat` is `{x, y, z, w}`); the attitude filter with its whole state, so that a learned gyro bias can be saved and restored |
@@ -229,10 +229,11 @@ pub mod kani_kernels {
     #[cfg(feature = "kernel-contracts")]
     pub use crate::float::is_correctly_rounded_sqrt;
     pub use crate::float::{atan2, sin_cos, sqrt};
-    /// slerp's f64 angle and sine, which `proofs/gappa/angle_f64.g`,
-    /// `angle_f64_above.g` and `sin_f64.g` model.
+    /// slerp's f64 arc, `sin(x) / x` and coefficients, which
+    /// `proofs/gappa/arc_f64.g`, `sinc_f64.g`, `coefficient_f64.g` and
+    /// `coefficient_rest_f64.g` model.
     #[cfg(desktop64)]
-    pub use crate::quat::kernels_f64::{atan2_of_root, sin_to_quarter_turn};
+    pub use crate::quat::kernels_f64::{slerp_arc, slerp_coefficients, slerp_sinc};
 }
 
 /// The conditions of the contracts on the core operations

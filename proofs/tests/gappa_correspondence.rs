@@ -634,71 +634,135 @@ fn square_root_is_sqrt_g() {
     }
 }
 
+/// Bits of two f64 results, or both NaN.
+#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+fn same_f64(model: f64, code: f64) -> bool {
+    model.to_bits() == code.to_bits() || (model.is_nan() && code.is_nan())
+}
+
 #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 #[test]
-fn f64_sine_is_sin_f64_g() {
-    let m = model("sin_f64");
-    assert_eq!(m.inputs, ["x"]);
+fn f64_sinc_is_sinc_f64_g() {
+    let m = model("sinc_f64");
+    assert_eq!(m.inputs, ["s"]);
     let mut d = Draws::new(11);
-    for i in 0..DRAWS {
-        // f32 arguments (as slerp's sweep) and f64 ones (as slerp computes).
-        let x = if i % 2 == 0 {
-            f64::from(d.uniform(9.3e-10, core::f32::consts::FRAC_PI_2))
+    let edges = [0.0, 1e-300, 2f64.powi(-60), 1.0, 2.4674011002723395, 2.4676];
+    let drawn = (0..DRAWS).map(|i| {
+        // Squares of f32 arguments (as the sweep), and f64 ones as slerp
+        // computes them (the share squared times phi^2).
+        if i % 2 == 0 {
+            let x = f64::from(d.uniform(0.0, core::f32::consts::FRAC_PI_2));
+            x * x
         } else {
-            f64::from_bits(d.next_u64()).abs() % core::f64::consts::FRAC_PI_2
-        };
-        let model = m.run(&[x])["y"];
-        let code = kani_kernels::sin_to_quarter_turn(x);
+            let share = f64::from(d.uniform(0.0, 1.0));
+            let phi = f64::from_bits(d.next_u64()).abs() % core::f64::consts::FRAC_PI_2;
+            (share * share) * (phi * phi)
+        }
+    });
+    for s in edges.into_iter().chain(drawn) {
+        let model = m.run(&[s])["g"];
+        let code = kani_kernels::slerp_sinc(s);
         assert!(
-            model.to_bits() == code.to_bits() || (model.is_nan() && code.is_nan()),
-            "sin_f64: {model:e} in the model, {code:e} in the code, at {x:e}"
+            same_f64(model, code),
+            "sinc_f64: {model:e} in the model, {code:e} in the code, at {s:e}"
         );
     }
 }
 
-/// angle_f64.g where the code takes its first branch (`w < x x`, and
-/// `w = x x`, where both branches compute z = 1 and the result is `a`),
-/// angle_f64_above.g where it takes the second (`w > x x`).
+/// arc_quotient_f64.g and then arc_f64.g on its `t2`, on the squared
+/// norms, dot product and squared wedge of unit pairs (the wedge from the
+/// f32 difference of the products), of pairs at every scale the evaluation
+/// takes (squared norms up to 2^32, within 1e-6 of each other), and of raw
+/// values; the models take `|a . b|`.
 #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 #[test]
-fn f64_angle_is_angle_f64_g_in_each_branch() {
-    let below = model("angle_f64");
-    let above = model("angle_f64_above");
-    assert_eq!(below.inputs, ["w", "x"]);
-    assert_eq!(above.inputs, ["w", "x"]);
-    let mut d = Draws::new(13);
-    let mut branches = [0usize; 2];
-    for i in 0..DRAWS {
-        let t = f64::from(d.uniform(0.0, 1.0));
-        // The constant's pairs (t, 1) and (1, t), and f64 pairs at every scale.
-        let (w, x) = match i % 3 {
-            0 => (t, 1.0),
-            1 => (1.0, t),
-            _ => {
-                let w = f64::from_bits(d.next_u64() >> 2);
-                let x = f64::from_bits(d.next_u64() >> 2);
-                (w, x)
+fn f64_arc_is_arc_quotient_f64_g_then_arc_f64_g() {
+    let quotient = model("arc_quotient_f64");
+    let m = model("arc_f64");
+    assert_eq!(quotient.inputs, ["n2", "on2", "dot", "wedge"]);
+    assert_eq!(m.inputs, ["t2"]);
+    for (i, mut d) in draws() {
+        let [n2, on2, dot, wedge] = match i % 3 {
+            0 => {
+                let (a, b) = (d.unit_quat(), d.unit_quat());
+                let (n2, on2, dot) = (a.norm_squared(), b.norm_squared(), a.dot(b));
+                [n2, on2, dot, (n2 * on2 - dot * dot).max(1e-30)]
             }
+            1 => {
+                let scale = 2f32.powi(d.below(65) as i32 - 32);
+                let n2 = d.uniform(0.5, 2.0) * scale;
+                let on2 = n2 * (1.0 + d.uniform(-1e-6, 1e-6));
+                let dot = d.uniform(-1.0, 1.0) * n2;
+                let wedge = d.uniform(0.0, 1.0) * n2 * on2 * 2f32.powi(-(d.below(60) as i32));
+                [n2, on2, dot, wedge.max(2f32.powi(-100))]
+            }
+            _ => core::array::from_fn(|_| d.f32_mixed()),
         };
-        let code = kani_kernels::atan2_of_root(w, x);
-        let (m, out) = if w > x * x {
-            branches[1] += 1;
-            (&above, "res")
-        } else {
-            branches[0] += 1;
-            (&below, "a")
-        };
-        let model = m.run(&[w, x])[out];
-        assert!(
-            model.to_bits() == code.to_bits() || (model.is_nan() && code.is_nan()),
-            "{}: {model:e} in the model, {code:e} in the code, at ({w:e}, {x:e})",
-            m.name
-        );
+        let t2 = quotient.run(&[n2, on2, dot.abs(), wedge].map(f64::from))["t2"];
+        let out = m.run(&[t2]);
+        let (phi_squared, phi_over_sine) = kani_kernels::slerp_arc(n2, on2, dot, wedge);
+        for (name, code) in [("phi2", phi_squared), ("pos", phi_over_sine)] {
+            assert!(
+                same_f64(out[name], code),
+                "arc_f64: {name} = {:e} in the model, {code:e} in the code, for {:?}",
+                out[name],
+                [n2, on2, dot, wedge]
+            );
+        }
     }
-    assert!(
-        branches.iter().all(|&b| b > 1000),
-        "branches drawn: {branches:?}"
-    );
+}
+
+/// coefficient_rest_f64.g (`c0`) and coefficient_f64.g (`c1`) on the arcs
+/// of drawn pairs (arc_quotient_f64.g's and arc_f64.g's outputs, so that
+/// the chain from the pair to the coefficients is the models' throughout)
+/// and on raw arcs, with `alpha` drawn in (0, 1] and at its edges.
+#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+#[test]
+fn f64_coefficients_are_coefficient_f64_g() {
+    let quotient = model("arc_quotient_f64");
+    let arc = model("arc_f64");
+    let share = model("coefficient_f64");
+    let rest = model("coefficient_rest_f64");
+    for m in [&share, &rest] {
+        assert_eq!(m.inputs, ["alpha", "phi2", "pos"]);
+    }
+    let edges = [
+        f32::from_bits(1),
+        1e-30,
+        1e-7,
+        0.5,
+        1.0 - f32::EPSILON / 2.0,
+        1.0,
+    ];
+    for (i, mut d) in draws() {
+        let (phi2, pos) = if i % 2 == 0 {
+            let (a, b) = (d.unit_quat(), d.unit_quat());
+            let (n2, on2, dot) = (a.norm_squared(), b.norm_squared(), a.dot(b));
+            let wedge = (n2 * on2 - dot * dot).max(1e-30);
+            let t2 = quotient.run(&[n2, on2, dot.abs(), wedge].map(f64::from))["t2"];
+            let out = arc.run(&[t2]);
+            (out["phi2"], out["pos"])
+        } else {
+            let phi = f64::from(d.uniform(0.0, core::f32::consts::FRAC_PI_2));
+            let phi2 = phi * phi + f64::from(d.uniform(-1e-9, 1e-9));
+            (phi2, phi / phi.sin().max(1e-9))
+        };
+        let alpha = if i % 5 == 0 {
+            edges[d.below(edges.len())]
+        } else {
+            d.uniform(0.0, 1.0)
+        };
+        let inputs = [f64::from(alpha), phi2, pos];
+        let [c0, c1] = kani_kernels::slerp_coefficients(phi2, pos, alpha);
+        for (m, code) in [(&rest, c0), (&share, c1)] {
+            let model = m.run(&inputs)["c"];
+            assert!(
+                same_f64(model, code),
+                "{}: {model:e} in the model, {code:e} in the code, for {inputs:?}",
+                m.name
+            );
+        }
+    }
 }
 
 /// The evaluator itself: its notations and its rounding.

@@ -19,6 +19,9 @@ use super::Quat;
 mod in_f32;
 #[cfg(desktop64)]
 mod in_f64;
+// The polynomials of the f64 evaluation (`ATAN`, `SIN`), and the arc and
+// `sin(x) / x` of `in_f64.rs` shown to the Gappa models' correspondence test
+// of proofs/ (under `kani_kernels`).
 #[cfg(desktop64)]
 pub(crate) mod kernels_f64;
 mod slice;

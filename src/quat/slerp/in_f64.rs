@@ -94,7 +94,7 @@ impl Pair {
     /// each other (relatively) where the evaluation applies, where the two
     /// differ by less than 1.3e-13 of either. With `t^2` that quotient (in
     /// [0, 1]) and `atan(t) = t h(t^2)` (`h = 1 + t^2 P(t^2)`, the
-    /// polynomial [`ATAN`] of the angle kernel), `phi = 2 t h`, so that
+    /// polynomial [`ATAN`]), `phi = 2 t h`, so that
     /// `phi^2 = 4 t^2 h^2` and, as `sin(phi) = 2 t / (1 + t^2)`,
     /// `phi / sin(phi) = h (1 + t^2)`: both functions of `t^2` alone.
     ///
@@ -126,8 +126,8 @@ impl Pair {
     /// `sin((1 - alpha) phi) / sin(phi) a + sin(alpha phi) / sin(phi)
     /// cn(b)`, each coefficient `s phi / sin(phi) sinc(s phi)` for its
     /// share `s` of the arc, `sinc(x) = sin(x) / x = 1 + x^2 Q(x^2)` with
-    /// the polynomial [`SIN`] of the sine kernel (of `x^2 = s^2 phi^2`:
-    /// `s^2` is exact), rounded to f32 once.
+    /// the polynomial [`SIN`] (of `x^2 = s^2 phi^2`), rounded to f32 once
+    /// ([`Arc::coefficients`]).
     ///
     /// # Preconditions
     ///
@@ -135,10 +135,7 @@ impl Pair {
     /// [`arc`](Self::arc).
     #[inline(always)]
     pub(super) fn slerp(&self, a: Quat, b: Quat, arc: Arc, alpha: f32) -> Quat {
-        let alpha = f64::from(alpha);
-        let rest = 1.0 - alpha;
-        let c0 = (rest * arc.phi_over_sine) * sinc((rest * rest) * arc.phi_squared);
-        let c1 = (alpha * arc.phi_over_sine) * sinc((alpha * alpha) * arc.phi_squared);
+        let [c0, c1] = arc.coefficients(alpha);
         a.weighted_sum(c0 as f32, b, (c1 as f32).copysign(self.dot))
     }
 }
@@ -152,8 +149,23 @@ pub(super) struct Arc {
     pub(super) phi_over_sine: f64,
 }
 
+impl Arc {
+    /// Slerp's coefficients `sin((1 - alpha) phi) / sin(phi)` and
+    /// `sin(alpha phi) / sin(phi)` for `alpha` in (0, 1], before their
+    /// rounding to f32: each `s phi / sin(phi) sinc(s^2 phi^2)` for its
+    /// share `s` of the arc.
+    #[inline(always)]
+    pub(super) fn coefficients(self, alpha: f32) -> [f64; 2] {
+        let alpha = f64::from(alpha);
+        let rest = 1.0 - alpha;
+        let c0 = (rest * self.phi_over_sine) * sinc((rest * rest) * self.phi_squared);
+        let c1 = (alpha * self.phi_over_sine) * sinc((alpha * alpha) * self.phi_squared);
+        [c0, c1]
+    }
+}
+
 /// `(atan(u) - u) / u^3` as a polynomial in `s = u^2` ([`ATAN`]), by
-/// Estrin's scheme, as the angle kernel evaluates it.
+/// Estrin's scheme (`proofs/gappa/arc_f64.g` models it).
 #[inline(always)]
 fn atan_polynomial(s: f64) -> f64 {
     let c = ATAN;
@@ -165,9 +177,9 @@ fn atan_polynomial(s: f64) -> f64 {
 }
 
 /// `sin(x) / x` from `s = x^2`, for `x` in [0, pi/2]: `1 + s Q(s)` with
-/// the polynomial [`SIN`] in pairs, as the sine kernel evaluates it.
+/// the polynomial [`SIN`] in pairs (`proofs/gappa/sinc_f64.g` models it).
 #[inline(always)]
-fn sinc(s: f64) -> f64 {
+pub(super) fn sinc(s: f64) -> f64 {
     let q = (SIN[0] + s * SIN[1]) + (s * s) * (SIN[2] + s * SIN[3]);
     1.0 + s * q
 }

@@ -1,11 +1,19 @@
-//! Slerp's angle and sines in f64, on 64-bit desktop targets (x86-64 and
-//! AArch64), where an f64 operation costs what an f32 one does: one
-//! polynomial each, without the range reductions and their selects that
-//! f32 needs for the same accuracy, and with rounding errors far below an
-//! f32 ulp. Never compiled for the microcontrollers, whose FPUs have no
-//! f64 (the f32 kernels serve them).
-
-use crate::float::sqrt;
+//! The polynomials of slerp's f64 evaluation (`in_f64.rs`), on 64-bit
+//! desktop targets (x86-64 and AArch64), where an f64 operation costs what
+//! an f32 one does: one polynomial each, without the range reductions and
+//! their selects that f32 needs for the same accuracy, and with rounding
+//! errors far below an f32 ulp. Never compiled for the microcontrollers,
+//! whose FPUs have no f64 (the f32 kernels serve them).
+//!
+//! [`ATAN`] gives `atan(t) / t = 1 + t^2 P(t^2)`, from which `Pair::arc`
+//! takes `phi^2` and `phi / sin(phi)`; [`SIN`] gives
+//! `sin(x) / x = 1 + x^2 Q(x^2)`, the `sinc` of slerp's coefficients.
+//! `proofs/gappa/arc_f64.g` and `sinc_f64.g` (with their Sollya scripts)
+//! prove the bounds of the accuracy constants
+//! [`PHI_SQUARED_F64_MAX_REL_ERROR`](crate::accuracy::PHI_SQUARED_F64_MAX_REL_ERROR),
+//! [`PHI_OVER_SINE_F64_MAX_REL_ERROR`](crate::accuracy::PHI_OVER_SINE_F64_MAX_REL_ERROR)
+//! and [`SINC_F64_MAX_REL_ERROR`](crate::accuracy::SINC_F64_MAX_REL_ERROR)
+//! for that evaluation; the tests below sweep them.
 
 /// Minimax coefficients of `(atan(u) - u) / u^3` as a polynomial in `u^2`
 /// on [0, 1], for relative error (`tools/minimax.py atan_f64`): the
@@ -31,87 +39,63 @@ pub(crate) const SIN: [f64; 4] = [
     2.605_780_657_782_845e-6,
 ];
 
-/// The sign bit of an f64.
-const SIGN: u64 = 0x8000_0000_0000_0000;
-
-/// `atan2(sqrt(w), x)`, the angle in [0, pi/2] of the point
-/// `(x, sqrt(w))`, for `w > 0` and `x >= 0` (both from f32, so that `x^2`
-/// is exact), without a branch and without taking `sqrt(w)` first.
-///
-/// With `z` the ratio of the smaller of `w` and `x^2` to the larger, in
-/// [0, 1], the angle is `atan(sqrt(z))`, or `pi/2` less it when `w` is the
-/// larger; `atan(u) = u + u^3 P(u^2)` with the degree-7 polynomial
-/// [`ATAN`], evaluated by Estrin's scheme (a shorter chain of dependent
-/// operations than Horner's) while `sqrt(z)` is taken in f32 by the
-/// crate's [`sqrt`]. The quarter turn and the sign are applied by
-/// arithmetic on the sign of `x^2 - w`, not by a select, which compilers
-/// turn into a branch that random inputs mispredict.
-///
-/// # Preconditions
-///
-/// `w` is positive and finite, `x` finite and not negative; then no
-/// operation makes a NaN or an infinity.
-///
-/// # Accuracy
-///
-/// Relative error below
-/// [`accuracy::ANGLE_F64_MAX_REL_ERROR`](crate::accuracy::ANGLE_F64_MAX_REL_ERROR):
-/// the f32 square root of `z` rounded to f32 (0.75 of an f32 ulp at most),
-/// the polynomial's 1.7e-8 and the f64 rounding.
-#[inline(always)]
+/// slerp's arc (`Pair::arc`): `(phi^2, phi / sin(phi))` from the squared
+/// norms `n2` and `on2`, the dot product `dot` and the squared wedge
+/// `wedge` of a pair, which `proofs/gappa/arc_f64.g` models.
+#[cfg(any(kani, feature = "kernel-contracts"))]
 #[must_use]
-pub fn atan2_of_root(w: f64, x: f64) -> f64 {
-    let x2 = x * x;
-    // Comparisons rather than `min` and `max`, whose NaN rules cost
-    // instructions (neither is NaN here).
-    let below = w < x2;
-    let z = if below { w } else { x2 } / if below { x2 } else { w };
-    let u = f64::from(sqrt(z as f32));
-    let z2 = z * z;
-    let z4 = z2 * z2;
-    let c = ATAN;
-    let low = (c[0] + z * c[1]) + z2 * (c[2] + z * c[3]);
-    let high = (c[4] + z * c[5]) + z2 * (c[6] + z * c[7]);
-    let p = low + z4 * high;
-    let a = u + u * (z * p);
-    // x^2 - w is negative exactly when the angle is above pi/4: then
-    // pi/2 - a (a quarter turn and the sign of a flipped), else a.
-    let d = x2 - w;
-    let quarter = 0.5 - 0.5f64.copysign(d);
-    let flipped = f64::from_bits(a.to_bits() ^ (d.to_bits() & SIGN));
-    quarter * core::f64::consts::FRAC_PI_2 + flipped
+pub fn slerp_arc(n2: f32, on2: f32, dot: f32, wedge: f32) -> (f64, f64) {
+    let arc = super::in_f64::Pair {
+        n2,
+        on2,
+        dot,
+        wedge,
+    }
+    .arc();
+    (arc.phi_squared, arc.phi_over_sine)
 }
 
-/// `sin(x)` for `0 <= x <= pi/2`: `x + x^3 P(x^2)` with the degree-3
-/// polynomial [`SIN`], in pairs (`x^3` beside `P`).
-///
-/// # Accuracy
-///
-/// Relative error below
-/// [`accuracy::SIN_F64_MAX_REL_ERROR`](crate::accuracy::SIN_F64_MAX_REL_ERROR):
-/// the polynomial's 6.1e-9 and the f64 rounding, a tenth of an f32 ulp.
-#[inline(always)]
+/// slerp's `sin(x) / x` from `s = x^2` (`in_f64.rs`'s `sinc`), which
+/// `proofs/gappa/sinc_f64.g` models.
+#[cfg(any(kani, feature = "kernel-contracts"))]
 #[must_use]
-pub fn sin_to_quarter_turn(x: f64) -> f64 {
-    let s = x * x;
-    let p = (SIN[0] + s * SIN[1]) + (s * s) * (SIN[2] + s * SIN[3]);
-    x + (x * s) * p
+pub fn slerp_sinc(s: f64) -> f64 {
+    super::in_f64::sinc(s)
+}
+
+/// slerp's coefficients before their rounding to f32
+/// (`Arc::coefficients`), `[c0, c1]`, from the arc's `phi^2` and
+/// `phi / sin(phi)`, which `proofs/gappa/coefficient_rest_f64.g` (`c0`) and
+/// `coefficient_f64.g` (`c1`) model.
+#[cfg(any(kani, feature = "kernel-contracts"))]
+#[must_use]
+pub fn slerp_coefficients(phi_squared: f64, phi_over_sine: f64, alpha: f32) -> [f64; 2] {
+    super::in_f64::Arc {
+        phi_squared,
+        phi_over_sine,
+    }
+    .coefficients(alpha)
 }
 
 #[cfg(test)]
 mod tests {
-    use super::*;
-    use crate::accuracy::{ANGLE_F64_MAX_REL_ERROR, SIN_F64_MAX_REL_ERROR};
+    use super::super::in_f64::{sinc, Pair};
+    use crate::accuracy::{
+        PHI_OVER_SINE_F64_MAX_REL_ERROR, PHI_SQUARED_F64_MAX_REL_ERROR, SINC_F64_MAX_REL_ERROR,
+        SLERP_COEFFICIENT_F64_MAX_REL_ERROR,
+    };
     use crate::float::sweep::{floats, SAMPLE_STEP};
     use core::f32::consts::FRAC_PI_2;
 
-    /// The largest relative error of [`sin_to_quarter_turn`] over every
-    /// `step`-th f32 of [2^-30, pi/2], against `std`'s f64 sine.
-    fn sine_sweep(step: usize) -> (f64, f32) {
+    /// The largest relative error of `sinc(x^2)` over every `step`-th f32
+    /// `x` of [2^-30, pi/2] (`x^2` exact in f64), against `std`'s f64
+    /// `sin(x) / x`.
+    fn sinc_sweep(step: usize) -> (f64, f32) {
         let mut worst = (0.0, 0.0);
         for x in floats(9.3e-10, FRAC_PI_2, step) {
-            let exact = f64::from(x).sin();
-            let err = ((sin_to_quarter_turn(f64::from(x)) - exact) / exact).abs();
+            let x64 = f64::from(x);
+            let exact = x64.sin() / x64;
+            let err = ((sinc(x64 * x64) - exact) / exact).abs();
             if err > worst.0 {
                 worst = (err, x);
             }
@@ -119,18 +103,29 @@ mod tests {
         worst
     }
 
-    /// The largest relative error of [`atan2_of_root`] over `(w, x)` =
-    /// `(t, 1)` and `(1, t)` for every `step`-th f32 `t` of [2^-30, 1]
-    /// (both sides of pi/4; in the first, `sqrt(t)` is rounded), against
-    /// `std`'s f64 atan2.
-    fn angle_sweep(step: usize) -> (f64, f32) {
-        let mut worst = (0.0, 0.0);
-        for t in floats(9.3e-10, 1.0, step) {
-            for (w, x) in [(f64::from(t), 1.0), (1.0, f64::from(t))] {
-                let exact = w.sqrt().atan2(x);
-                let err = ((atan2_of_root(w, x) - exact) / exact).abs();
-                if err > worst.0 {
-                    worst = (err, t);
+    /// The largest relative errors of the arc's `phi^2` and
+    /// `phi / sin(phi)` over every `step`-th f32 `t2` of [2^-30, 1], as
+    /// the tangent of the half angle squared (the pair `|a|^2 = |b|^2 = 1`,
+    /// `a . b = 0` and wedge `t2`, for which the arc's quotient is `t2`
+    /// exactly), against `phi = 2 atan(sqrt(t2))` in `std`'s f64.
+    fn arc_sweep(step: usize) -> [(f64, f32); 2] {
+        let mut worst = [(0.0, 0.0); 2];
+        for t2 in floats(9.3e-10, 1.0, step) {
+            let phi = 2.0 * f64::from(t2).sqrt().atan();
+            let arc = Pair {
+                n2: 1.0,
+                on2: 1.0,
+                dot: 0.0,
+                wedge: t2,
+            }
+            .arc();
+            let errors = [
+                (arc.phi_squared - phi * phi) / (phi * phi),
+                (arc.phi_over_sine - phi / phi.sin()) * phi.sin() / phi,
+            ];
+            for (w, e) in worst.iter_mut().zip(errors) {
+                if e.abs() > w.0 {
+                    *w = (e.abs(), t2);
                 }
             }
         }
@@ -138,41 +133,133 @@ mod tests {
     }
 
     #[test]
-    fn sine_is_within_its_bound_on_a_sample() {
-        let (err, x) = sine_sweep(SAMPLE_STEP);
-        assert!(err <= f64::from(SIN_F64_MAX_REL_ERROR), "{err:e} at {x}");
+    fn sinc_is_within_its_bound_on_a_sample() {
+        let (err, x) = sinc_sweep(SAMPLE_STEP);
+        assert!(err <= f64::from(SINC_F64_MAX_REL_ERROR), "{err:e} at {x}");
     }
 
     #[test]
-    fn angle_is_within_its_bound_on_a_sample() {
-        let (err, t) = angle_sweep(SAMPLE_STEP);
-        assert!(err <= f64::from(ANGLE_F64_MAX_REL_ERROR), "{err:e} at {t}");
+    fn arc_is_within_its_bounds_on_a_sample() {
+        let [(square, t), (ratio, u)] = arc_sweep(SAMPLE_STEP);
+        assert!(
+            square <= f64::from(PHI_SQUARED_F64_MAX_REL_ERROR),
+            "phi^2: {square:e} at {t}"
+        );
+        assert!(
+            ratio <= f64::from(PHI_OVER_SINE_F64_MAX_REL_ERROR),
+            "phi / sin(phi): {ratio:e} at {u}"
+        );
+    }
+
+    /// The largest relative error of slerp's coefficients before their
+    /// rounding to f32, over every `step`-th f32 `t2` of [2^-25, 1] (the
+    /// arc as in [`arc_sweep`], `phi^2` above 2^-24) and shares from the
+    /// smallest f32 to 1, against `sin((1 - alpha) phi) / sin(phi)` and
+    /// `sin(alpha phi) / sin(phi)` in `std`'s f64.
+    fn coefficient_sweep(step: usize) -> (f64, f32, f32) {
+        let alphas = [
+            f32::from_bits(1),
+            1e-30,
+            1e-7,
+            1e-3,
+            0.1,
+            0.25,
+            1.0 / 3.0,
+            0.5,
+            0.7,
+            0.9,
+            0.999,
+            1.0 - f32::EPSILON / 2.0,
+            1.0,
+        ];
+        let mut worst = (0.0, 0.0, 0.0);
+        for t2 in floats(2.9802322e-8, 1.0, step) {
+            let phi = 2.0 * f64::from(t2).sqrt().atan();
+            let arc = Pair {
+                n2: 1.0,
+                on2: 1.0,
+                dot: 0.0,
+                wedge: t2,
+            }
+            .arc();
+            for alpha in alphas {
+                let [c0, c1] = arc.coefficients(alpha);
+                let share = f64::from(alpha);
+                let exact = [(1.0 - share) * phi, share * phi].map(|x| x.sin() / phi.sin());
+                for (c, e) in [c0, c1].into_iter().zip(exact) {
+                    let err = if e == 0.0 {
+                        c.abs()
+                    } else {
+                        ((c - e) / e).abs()
+                    };
+                    if err > worst.0 {
+                        worst = (err, t2, alpha);
+                    }
+                }
+            }
+        }
+        worst
+    }
+
+    #[test]
+    fn coefficients_are_within_their_bound_on_a_sample() {
+        let (err, t2, alpha) = coefficient_sweep(16 * SAMPLE_STEP);
+        assert!(
+            err <= f64::from(SLERP_COEFFICIENT_F64_MAX_REL_ERROR),
+            "{err:e} at t2 = {t2}, alpha = {alpha}"
+        );
+    }
+
+    /// The hypothesis of `proofs/gappa/arc_f64.g`: the arc's quotient
+    /// `t2 = wedge / (m + |dot|)^2`, with `m` the mean of the squared norms,
+    /// stays below 1.0001 (its exact value, `tan^2(phi / 2)`, is at most 1)
+    /// on random unit pairs and on pairs at right angles, where it is
+    /// largest.
+    #[test]
+    fn arc_quotient_stays_within_the_models_domain() {
+        use crate::test_draws::unit_quat;
+        use crate::Quat;
+        use rand::SeedableRng;
+        let mut rng = rand::rngs::StdRng::seed_from_u64(31);
+        let mut largest = 0.0f64;
+        for i in 0..200_000 {
+            let a = unit_quat(&mut rng);
+            let b = unit_quat(&mut rng);
+            // Every other pair at a right angle: b less its part along a.
+            let b = if i % 2 == 0 {
+                let d = a.dot(b);
+                Quat::from_array(core::array::from_fn(|k| {
+                    b.to_array()[k] - d * a.to_array()[k]
+                }))
+                .normalize()
+            } else {
+                b
+            };
+            let p = Pair::of(a, b);
+            let m = 0.5 * (f64::from(p.n2) + f64::from(p.on2));
+            let d = m + f64::from(p.dot.abs());
+            largest = largest.max(f64::from(p.wedge) / (d * d));
+        }
+        assert!(largest > 0.999_99 && largest <= 1.0001, "{largest}");
     }
 
     /// Every f32 of the ranges:
-    /// `cargo test --release --lib -- --ignored exhaustive_kernel_sweep`.
+    /// `cargo test --release --lib -- --ignored exhaustive_kernel_sweep_f64`.
     #[test]
-    #[ignore = "minutes in release: run by hand after changing a kernel"]
-    fn exhaustive_kernel_sweep() {
-        let (sine, x) = sine_sweep(1);
-        let (angle, t) = angle_sweep(1);
-        std::println!("sin_to_quarter_turn: {sine:e} at {x}; atan2_of_root: {angle:e} at {t}");
-        assert!(sine <= f64::from(SIN_F64_MAX_REL_ERROR));
-        assert!(angle <= f64::from(ANGLE_F64_MAX_REL_ERROR));
-    }
-
-    /// The edges of the angle's range: 0, pi/4 and pi/2 exactly where the
-    /// inputs say so.
-    #[test]
-    fn angle_meets_its_edges() {
-        assert_eq!(atan2_of_root(1.0, 0.0), core::f64::consts::FRAC_PI_2);
-        let tiny = atan2_of_root(1e-30, 1.0);
-        assert!((tiny / 1e-15 - 1.0).abs() < 1e-7, "{tiny:e}");
-        let quarter = atan2_of_root(1.0, 1.0);
-        let quarter_error = (quarter / core::f64::consts::FRAC_PI_4 - 1.0).abs();
-        assert!(
-            quarter_error <= f64::from(ANGLE_F64_MAX_REL_ERROR),
-            "{quarter}"
+    #[ignore = "minutes in release: run by hand after changing a polynomial"]
+    fn exhaustive_kernel_sweep_f64() {
+        let (sinc_error, x) = sinc_sweep(1);
+        let [(square, t), (ratio, u)] = arc_sweep(1);
+        // Every 64th f32 `t2`: with 13 values of `alpha`, every f32
+        // would take hours.
+        let (coefficient, v, alpha) = coefficient_sweep(64);
+        std::println!("coefficients: {coefficient:e} at t2 = {v}, alpha = {alpha}");
+        std::println!(
+            "sinc: {sinc_error:e} at {x}; phi^2: {square:e} at t2 = {t}; phi / sin(phi): {ratio:e} at t2 = {u}"
         );
+        assert!(sinc_error <= f64::from(SINC_F64_MAX_REL_ERROR));
+        assert!(square <= f64::from(PHI_SQUARED_F64_MAX_REL_ERROR));
+        assert!(ratio <= f64::from(PHI_OVER_SINE_F64_MAX_REL_ERROR));
+        assert!(coefficient <= f64::from(SLERP_COEFFICIENT_F64_MAX_REL_ERROR));
     }
 }
