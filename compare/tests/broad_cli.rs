@@ -68,9 +68,22 @@ fn script_is_found_at_run_time_next_to_the_binary() {
         "{err}"
     );
     // A script next to it is the one run: this one, for `sh`, prints the
-    // identity for both of VQF's runs.
+    // identity for both of VQF's runs. Fusion's script is looked for the
+    // same way, and the message names it too.
     let script = "echo w6,x6,y6,z6,w9,x9,y9,z9\nfor i in 1 2; do echo 1,0,0,0,1,0,0,0; done\n";
     std::fs::write(dir.join("vqf_broad.py"), script).unwrap();
+    let o = broad(
+        &exe,
+        &["--python".as_ref(), "sh".as_ref(), trial.as_os_str()],
+    );
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert!(err.contains("cannot find fusion_broad.py"), "{err}");
+    assert!(
+        err.contains(&dir.join("fusion_broad.py").display().to_string()),
+        "{err}"
+    );
+    std::fs::write(dir.join("fusion_broad.py"), script).unwrap();
     let o = broad(
         &exe,
         &["--python".as_ref(), "sh".as_ref(), trial.as_os_str()],
