@@ -103,6 +103,21 @@ mod tests {
         worst
     }
 
+    /// The arc of the pair whose quotient is `t2` exactly (`|a|^2 = |b|^2
+    /// = 1`, `a . b = 0`, wedge `t2`), and its exact `phi = 2 atan(sqrt(t2))`
+    /// in `std`'s f64.
+    fn right_angled(t2: f32) -> (f64, super::super::in_f64::Arc) {
+        let phi = 2.0 * f64::from(t2).sqrt().atan();
+        let arc = Pair {
+            n2: 1.0,
+            on2: 1.0,
+            dot: 0.0,
+            wedge: t2,
+        }
+        .arc();
+        (phi, arc)
+    }
+
     /// The largest relative errors of the arc's `phi^2` and
     /// `phi / sin(phi)` over every `step`-th f32 `t2` of [2^-30, 1], as
     /// the tangent of the half angle squared (the pair `|a|^2 = |b|^2 = 1`,
@@ -111,14 +126,7 @@ mod tests {
     fn arc_sweep(step: usize) -> [(f64, f32); 2] {
         let mut worst = [(0.0, 0.0); 2];
         for t2 in floats(9.3e-10, 1.0, step) {
-            let phi = 2.0 * f64::from(t2).sqrt().atan();
-            let arc = Pair {
-                n2: 1.0,
-                on2: 1.0,
-                dot: 0.0,
-                wedge: t2,
-            }
-            .arc();
+            let (phi, arc) = right_angled(t2);
             let errors = [
                 (arc.phi_squared - phi * phi) / (phi * phi),
                 (arc.phi_over_sine - phi / phi.sin()) * phi.sin() / phi,
@@ -174,14 +182,7 @@ mod tests {
         ];
         let mut worst = (0.0, 0.0, 0.0);
         for t2 in floats(2.9802322e-8, 1.0, step) {
-            let phi = 2.0 * f64::from(t2).sqrt().atan();
-            let arc = Pair {
-                n2: 1.0,
-                on2: 1.0,
-                dot: 0.0,
-                wedge: t2,
-            }
-            .arc();
+            let (phi, arc) = right_angled(t2);
             for alpha in alphas {
                 let [c0, c1] = arc.coefficients(alpha);
                 let share = f64::from(alpha);
