@@ -38,7 +38,7 @@ impl Quat {
     /// multiply-add), so the results agree bit for bit where that
     /// evaluation is the one `slerp` takes; the pairs where it is not (not
     /// finite or not within 2^16 per component, 2^-12 rad apart or less,
-    /// norms more than 1e-6 apart, a wedge small enough to underflow) are
+    /// norms more than 1e-6 apart, at a right angle to f64's precision) are
     /// then done again by `slerp` itself. Every other `alpha`, and every
     /// other target, is a loop of `slerp`.
     ///
