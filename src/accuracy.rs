@@ -136,8 +136,8 @@ pub const SIN_COS_MAX_ULP: f32 = 1.25; // 0.985 at 2.3279488e23
 /// x86-64 and AArch64 (`quat/slerp/in_f64.rs`, `Pair::arc`), against the
 /// exact `phi^2 = 4 atan^2(sqrt(t2))` of the quotient `t2 = tan^2(phi / 2)`
 /// that the evaluation computes in f64, for `t2` in [2^-170, 1.0001]. The
-/// error of `t2` itself (from the f32 wedge, dot product and squared norms
-/// of the inputs) is the inputs' and is not part of it.
+/// error of `t2` itself (the rounding of the f64 sums of squares of the
+/// inputs' difference and sum, and the inputs' own) is not part of it.
 ///
 /// Known: proven: `proofs/gappa/arc_f64.g` proves 3.392e-8: Sollya bounds
 /// the approximation error of `1 + t2 P(t2)` against `atan(t) / t` by

@@ -38,10 +38,8 @@ pub(crate) mod sweep;
 
 /// What the portable lanes of `Quat::slerp_slice` use besides.
 #[cfg(any(portable_lanes, all(test, desktop64)))]
-pub(crate) use bits::select;
+pub(crate) use bits::select_f64;
 pub(crate) use bits::SIGN;
-#[cfg(desktop64)]
-pub(crate) use norm::SQUARES_UNDERFLOW;
 pub(crate) use norm::{needs_no_rescaling, scale_for_squares, ScaledSquares};
 pub(crate) use sin_cos::sin3;
 pub use sqrt::sqrt;

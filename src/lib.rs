@@ -2,8 +2,8 @@
 //! microcontroller IMU firmware and for renderers. `#![no_std]`, no heap, no
 //! panics, one required dependency (`libm`), and no `unsafe` code but
 //! for the processor's square root instruction (on Arm hard-float targets,
-//! x86-64 and AArch64) and, on x86-64, the quaternion product in SSE
-//! registers and the slice APIs' vector lanes.
+//! x86-64 and AArch64) and, on x86-64, the quaternion product and slerp's
+//! f64 evaluation in SSE registers and the slice APIs' vector lanes.
 //!
 //! It implements the quaternion lecture notes of CS175 (Gortler,
 //! *Foundations of 3D Computer Graphics*, chapters 7 and 8): [`Quat`] with
@@ -190,7 +190,8 @@
 // `vsqrt.f32` (`fpu_sqrt`) on Arm hard-float targets, `sqrtss` and `fsqrt`
 // (`vector_unit_sqrt`) on x86-64 with SSE and AArch64 with NEON; and on
 // x86-64 with SSE the quaternion product in SSE registers
-// (`product::by_lanes` in src/quat/product.rs) and the slice APIs' vector
+// (`product::by_lanes` in src/quat/product.rs), slerp's pair and weighted
+// sum (src/quat/slerp/in_f64/sse2.rs) and the slice APIs' vector
 // lanes (the `Isa` implementations of src/quat/slerp/slice/sse2.rs and,
 // with AVX, avx.rs: one intrinsic per operation; and `lerp_all_components`
 // in src/rigtform/slice.rs, which sees RigTForms as f32s). There the

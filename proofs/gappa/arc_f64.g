@@ -16,15 +16,15 @@
 # (atan_f64.sollya: 1.69581e-8 over sqrt(t2) in [0, 1.00005], rounded up
 # here to 1.6959e-8).
 #
-# Domain, a hypothesis on the t2 the code computes: t2 in [2^-170, 1.0001].
-# Its lower end follows from the code (wedge >= 2^-100, squared norms at
-# most 2^32); its upper end does not: the exact tan^2(phi / 2) is at most
-# 1, and the computed quotient exceeds it by the f32 rounding of the
-# wedge, the norms and the dot product, which no model bounds
-# (kernels_f64.rs's arc_quotient_stays_within_the_models_domain tests it
-# on random and right-angled unit pairs). The error of t2 against the
-# inputs' exact tan^2(phi / 2) is the inputs' error, not part of the
-# bounds.
+# Domain, a hypothesis on the t2 the code computes: t2 in [2^-170, 1.0001],
+# wider than the code needs. Its upper end follows from the code: t2 is
+# |a - cn(b)|^2 over |a + cn(b)|^2, below 1 where the evaluation applies. Below its
+# lower end the code computes arcs too (t2 down to 0) but never uses them:
+# slerp takes the result only where phi^2 is above 2^-24, where t2 is
+# above 2^-27 (kernels_f64.rs's arc_quotient_stays_within_the_models_domain
+# tests both ends on random, right-angled and nearly identical unit
+# pairs). The error of t2 against the inputs' exact tan^2(phi / 2) is the
+# inputs' error, not part of the bounds.
 #
 # Proven: phi^2 within 3.392e-8 and phi / sin(phi) within 1.696e-8 of
 # their exact values for the computed t2, relative; phi / sin(phi) in

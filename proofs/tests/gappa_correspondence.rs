@@ -669,44 +669,54 @@ fn f64_sinc_is_sinc_f64_g() {
     }
 }
 
+/// `|a - cn(b)|^2` and `|a + cn(b)|^2` of a pair, in f64 as slerp takes
+/// them: `|a|^2 + |b|^2 -+ 2 |a . b|`, each sum as `(x x' + z z') + (y y'
+/// + w w')`.
+fn lengths(a: Quat, b: Quat) -> [f64; 2] {
+    let dot = |p: Quat, q: Quat| {
+        let c = |u: f32, v: f32| f64::from(u) * f64::from(v);
+        (c(p.x, q.x) + c(p.z, q.z)) + (c(p.y, q.y) + c(p.w, q.w))
+    };
+    let (sum, twice) = (dot(a, a) + dot(b, b), 2.0 * dot(a, b).abs());
+    [sum - twice, sum + twice]
+}
+
 /// arc_quotient_f64.g and then arc_f64.g on its `t2`, on the squared
-/// norms, dot product and squared wedge of unit pairs (the wedge from the
-/// f32 difference of the products), of pairs at every scale the evaluation
-/// takes (squared norms up to 2^32, within 1e-6 of each other), and of raw
-/// values; the models take `|a . b|`.
+/// lengths `near` and `far` of unit pairs, of pairs at every scale the
+/// evaluation takes (squared norms up to 2^32), and of raw values.
 #[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
 #[test]
 fn f64_arc_is_arc_quotient_f64_g_then_arc_f64_g() {
     let quotient = model("arc_quotient_f64");
     let m = model("arc_f64");
-    assert_eq!(quotient.inputs, ["n2", "on2", "dot", "wedge"]);
+    assert_eq!(quotient.inputs, ["near", "far"]);
     assert_eq!(m.inputs, ["t2"]);
     for (i, mut d) in draws() {
-        let [n2, on2, dot, wedge] = match i % 3 {
-            0 => {
-                let (a, b) = (d.unit_quat(), d.unit_quat());
-                let (n2, on2, dot) = (a.norm_squared(), b.norm_squared(), a.dot(b));
-                [n2, on2, dot, (n2 * on2 - dot * dot).max(1e-30)]
-            }
+        let [near, far] = match i % 3 {
+            0 => lengths(d.unit_quat(), d.unit_quat()),
             1 => {
-                let scale = 2f32.powi(d.below(65) as i32 - 32);
-                let n2 = d.uniform(0.5, 2.0) * scale;
-                let on2 = n2 * (1.0 + d.uniform(-1e-6, 1e-6));
-                let dot = d.uniform(-1.0, 1.0) * n2;
-                let wedge = d.uniform(0.0, 1.0) * n2 * on2 * 2f32.powi(-(d.below(60) as i32));
-                [n2, on2, dot, wedge.max(2f32.powi(-100))]
+                let scale = 2f32.powi(d.below(33) as i32 - 16);
+                let (a, b) = (d.unit_quat(), d.unit_quat());
+                let scaled = |q: Quat| quat([q.w, q.x, q.y, q.z].map(|c| c * scale));
+                lengths(scaled(a), scaled(b))
             }
-            _ => core::array::from_fn(|_| d.f32_mixed()),
+            _ => {
+                let v = f64::from(d.uniform(0.0, 1.0)) * 2f64.powi(-(d.below(290) as i32));
+                [v.max(2f64.powi(-298)), f64::from(d.uniform(1e-3, 4.0))]
+            }
         };
-        let t2 = quotient.run(&[n2, on2, dot.abs(), wedge].map(f64::from))["t2"];
+        if near <= 0.0 || near >= far {
+            continue;
+        }
+        let t2 = quotient.run(&[near, far])["t2"];
         let out = m.run(&[t2]);
-        let (phi_squared, phi_over_sine) = kani_kernels::slerp_arc(n2, on2, dot, wedge);
+        let (phi_squared, phi_over_sine) = kani_kernels::slerp_arc(near, far);
         for (name, code) in [("phi2", phi_squared), ("pos", phi_over_sine)] {
             assert!(
                 same_f64(out[name], code),
                 "arc_f64: {name} = {:e} in the model, {code:e} in the code, for {:?}",
                 out[name],
-                [n2, on2, dot, wedge]
+                [near, far]
             );
         }
     }
@@ -736,10 +746,8 @@ fn f64_coefficients_are_coefficient_f64_g() {
     ];
     for (i, mut d) in draws() {
         let (phi2, pos) = if i % 2 == 0 {
-            let (a, b) = (d.unit_quat(), d.unit_quat());
-            let (n2, on2, dot) = (a.norm_squared(), b.norm_squared(), a.dot(b));
-            let wedge = (n2 * on2 - dot * dot).max(1e-30);
-            let t2 = quotient.run(&[n2, on2, dot.abs(), wedge].map(f64::from))["t2"];
+            let [near, far] = lengths(d.unit_quat(), d.unit_quat());
+            let t2 = quotient.run(&[near, far])["t2"];
             let out = arc.run(&[t2]);
             (out["phi2"], out["pos"])
         } else {

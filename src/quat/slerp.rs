@@ -3,8 +3,9 @@
 //!
 //! - this file: `slerp` itself, which picks the evaluation for the target;
 //! - `slerp/in_f64.rs` (x86-64, AArch64): the in-plane formula in f64,
-//!   its arc from the wedge of the inputs, for the ordinary pairs, with the
-//!   polynomials of `slerp/kernels_f64.rs`;
+//!   its arc from the difference and the sum of the inputs, for the
+//!   ordinary pairs, with the polynomials of `slerp/kernels_f64.rs` (and
+//!   `slerp/in_f64/sse2.rs`, the same in x86-64's vector registers);
 //! - `slerp/in_f32.rs`: the whole of slerp in f32 (every input, every
 //!   `alpha`), on every other target, and on x86-64 and AArch64 for what
 //!   the f64 evaluation leaves;
@@ -70,14 +71,16 @@ impl Quat {
     /// rotation between them. On x86-64 and AArch64, where an f64
     /// operation costs what an f32 one does, `alpha` in (0, 1] takes the
     /// same formula in f64 (`quat/slerp/in_f64.rs`), with `phi^2` and
-    /// `phi / sin(phi)` from the tangent of the half angle (the wedge of the
-    /// inputs over the sum of their norms' product and their dot product) and
-    /// each coefficient `sin(s phi) / sin(phi)` as `s phi / sin(phi)` times a
-    /// polynomial in `(s phi)^2`: one division, no square root, no branch
-    /// that random inputs mispredict, and coefficients rounded to f32 once;
-    /// inputs it
+    /// `phi / sin(phi)` from the tangent of the half angle (the shorter of
+    /// `self - other` and `self + other` over the longer, squared, from
+    /// the norms and the dot product in f64, where every product of the f32
+    /// components is exact) and each coefficient
+    /// `sin(s phi) / sin(phi)` as `s phi / sin(phi)` times a polynomial in
+    /// `(s phi)^2`: one division, no square root, no branch that random
+    /// inputs mispredict, and coefficients rounded to f32 once; inputs it
     /// does not take (norms more than 1e-6 apart, components beyond 2^16,
-    /// angles of 2^-12 rad or less) go the way described here. For
+    /// angles of 2^-12 rad or less, pairs at a right angle to f64's
+    /// precision) go the way described here. For
     /// extrapolation (where the two coefficients
     /// grow and their rounding would show in the norm) the notes' formula itself is evaluated as a turn by
     /// `alpha phi` from `self` (`slerp_extrapolated`; it rounds `alpha phi`,

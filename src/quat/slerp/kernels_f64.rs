@@ -40,18 +40,13 @@ pub(crate) const SIN: [f64; 4] = [
 ];
 
 /// slerp's arc (`Pair::arc`): `(phi^2, phi / sin(phi))` from the squared
-/// norms `n2` and `on2`, the dot product `dot` and the squared wedge
-/// `wedge` of a pair, which `proofs/gappa/arc_f64.g` models.
+/// lengths `near = |a - cn(b)|^2` and `far = |a + cn(b)|^2` of a pair,
+/// which `proofs/gappa/arc_quotient_f64.g` (their quotient) and
+/// `arc_f64.g` (the rest) model.
 #[cfg(any(kani, feature = "kernel-contracts"))]
 #[must_use]
-pub fn slerp_arc(n2: f32, on2: f32, dot: f32, wedge: f32) -> (f64, f64) {
-    let arc = super::in_f64::Pair {
-        n2,
-        on2,
-        dot,
-        wedge,
-    }
-    .arc();
+pub fn slerp_arc(near: f64, far: f64) -> (f64, f64) {
+    let arc = super::in_f64::Arc::from_lengths(near, far);
     (arc.phi_squared, arc.phi_over_sine)
 }
 
@@ -79,7 +74,7 @@ pub fn slerp_coefficients(phi_squared: f64, phi_over_sine: f64, alpha: f32) -> [
 
 #[cfg(test)]
 mod tests {
-    use super::super::in_f64::{sinc, Pair};
+    use super::super::in_f64::{sinc, Arc, Pair, SMALL_ANGLE_SQUARED_F64};
     use crate::accuracy::{
         PHI_OVER_SINE_F64_MAX_REL_ERROR, PHI_SQUARED_F64_MAX_REL_ERROR, SINC_F64_MAX_REL_ERROR,
         SLERP_COEFFICIENT_F64_MAX_REL_ERROR,
@@ -103,26 +98,18 @@ mod tests {
         worst
     }
 
-    /// The arc of the pair whose quotient is `t2` exactly (`|a|^2 = |b|^2
-    /// = 1`, `a . b = 0`, wedge `t2`), and its exact `phi = 2 atan(sqrt(t2))`
-    /// in `std`'s f64.
-    fn right_angled(t2: f32) -> (f64, super::super::in_f64::Arc) {
+    /// The arc of the lengths whose quotient is `t2` exactly (`t2` over
+    /// 1), and its exact `phi = 2 atan(sqrt(t2))` in
+    /// `std`'s f64.
+    fn right_angled(t2: f32) -> (f64, Arc) {
         let phi = 2.0 * f64::from(t2).sqrt().atan();
-        let arc = Pair {
-            n2: 1.0,
-            on2: 1.0,
-            dot: 0.0,
-            wedge: t2,
-        }
-        .arc();
-        (phi, arc)
+        (phi, Arc::from_lengths(f64::from(t2), 1.0))
     }
 
     /// The largest relative errors of the arc's `phi^2` and
     /// `phi / sin(phi)` over every `step`-th f32 `t2` of [2^-30, 1], as
-    /// the tangent of the half angle squared (the pair `|a|^2 = |b|^2 = 1`,
-    /// `a . b = 0` and wedge `t2`, for which the arc's quotient is `t2`
-    /// exactly), against `phi = 2 atan(sqrt(t2))` in `std`'s f64.
+    /// the tangent of the half angle squared (the lengths `t2` and 1, whose
+    /// quotient is `t2` exactly), against `phi = 2 atan(sqrt(t2))` in `std`'s f64.
     fn arc_sweep(step: usize) -> [(f64, f32); 2] {
         let mut worst = [(0.0, 0.0); 2];
         for t2 in floats(9.3e-10, 1.0, step) {
@@ -212,36 +199,47 @@ mod tests {
     }
 
     /// The hypothesis of `proofs/gappa/arc_f64.g`: the arc's quotient
-    /// `t2 = wedge / (m + |dot|)^2`, with `m` the mean of the squared norms,
-    /// stays below 1.0001 (its exact value, `tan^2(phi / 2)`, is at most 1)
-    /// on random unit pairs and on pairs at right angles, where it is
-    /// largest.
+    /// `t2 = |a - cn(b)|^2 / |a + cn(b)|^2` lies in [2^-170, 1] wherever slerp takes its result (`phi^2` above
+    /// 2^-24), on random unit pairs, pairs at right angles (where it is 1)
+    /// and pairs just past the small angles (where it is smallest).
     #[test]
     fn arc_quotient_stays_within_the_models_domain() {
         use crate::test_draws::unit_quat;
         use crate::Quat;
-        use rand::SeedableRng;
+        use rand::{Rng, SeedableRng};
         let mut rng = rand::rngs::StdRng::seed_from_u64(31);
-        let mut largest = 0.0f64;
+        let (mut smallest, mut largest) = (f64::INFINITY, 0.0f64);
         for i in 0..200_000 {
             let a = unit_quat(&mut rng);
-            let b = unit_quat(&mut rng);
-            // Every other pair at a right angle: b less its part along a.
-            let b = if i % 2 == 0 {
-                let d = a.dot(b);
-                Quat::from_array(core::array::from_fn(|k| {
-                    b.to_array()[k] - d * a.to_array()[k]
-                }))
-                .normalize()
-            } else {
-                b
+            let b = match i % 3 {
+                // b less its part along a: a right angle.
+                0 => {
+                    let b = unit_quat(&mut rng);
+                    let d = a.dot(b);
+                    Quat::from_array(core::array::from_fn(|k| {
+                        b.to_array()[k] - d * a.to_array()[k]
+                    }))
+                    .normalize()
+                }
+                // Turned by twice the small angle's bound, or a little more.
+                1 => {
+                    let turn = 2.0 * super::super::SMALL_ANGLE * rng.random_range(1.0..1.5f32);
+                    a * Quat::from_rotation_z(turn)
+                }
+                _ => unit_quat(&mut rng),
             };
             let p = Pair::of(a, b);
-            let m = 0.5 * (f64::from(p.n2) + f64::from(p.on2));
-            let d = m + f64::from(p.dot.abs());
-            largest = largest.max(f64::from(p.wedge) / (d * d));
+            if !p.applies() || p.arc().phi_squared <= SMALL_ANGLE_SQUARED_F64 {
+                continue;
+            }
+            let t2 = p.near() / p.far();
+            (smallest, largest) = (smallest.min(t2), largest.max(t2));
         }
-        assert!(largest > 0.999_99 && largest <= 1.0001, "{largest}");
+        assert!(largest > 0.999_99 && largest <= 1.0, "{largest}");
+        assert!(
+            smallest >= 2f64.powi(-170) && smallest < 2f64.powi(-25),
+            "{smallest}"
+        );
     }
 
     /// Every f32 of the ranges:

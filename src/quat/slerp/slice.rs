@@ -22,7 +22,8 @@ impl Quat {
     /// angle and sines in f64), written without a branch, many pairs at a
     /// time in vector registers:
     ///
-    /// - on x86-64, sixteen pairs a step, in vector registers written by
+    /// - on x86-64, eight (SSE2) or sixteen (AVX) pairs a step, in vector
+    ///   registers written by
     ///   hand: SSE2's on every target with SSE, AVX's where AVX is enabled
     ///   at compile time (`-C target-cpu=x86-64-v3`, `-C target-cpu=native`
     ///   on a processor with AVX, or `-C target-feature=+avx`). On a Zen 3
@@ -38,7 +39,7 @@ impl Quat {
     /// multiply-add), so the results agree bit for bit where that
     /// evaluation is the one `slerp` takes; the pairs where it is not (not
     /// finite or not within 2^16 per component, 2^-12 rad apart or less,
-    /// norms more than 1e-6 apart, a wedge small enough to underflow) are
+    /// norms more than 1e-6 apart, at a right angle to f64's precision) are
     /// then done again by `slerp` itself. Every other `alpha`, and every
     /// other target, is a loop of `slerp`.
     ///
@@ -126,7 +127,7 @@ pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, o
     }
     #[cfg(all(x86_sse_lanes, not(x86_avx_lanes)))]
     if alpha > 0.0 && alpha <= 1.0 {
-        return steps::slerp_in_steps::<sse2::Sse2, T, 4, 8, 16>(starts, ends, alpha, out);
+        return steps::slerp_in_steps::<sse2::Sse2, T, 2, 4, 8>(starts, ends, alpha, out);
     }
     #[cfg(portable_lanes)]
     if alpha > 0.0 && alpha <= 1.0 {
@@ -147,7 +148,7 @@ mod steps;
 #[cfg(x86_avx_lanes)]
 mod avx;
 
-/// The operations of SSE2: sixteen pairs a step (also compiled for the
+/// The operations of SSE2: eight pairs a step (also compiled for the
 /// tests of AVX builds, which check both).
 #[cfg(all(x86_sse_lanes, any(test, not(x86_avx_lanes))))]
 mod sse2;

@@ -8,12 +8,11 @@ use crate::Quat;
 use core::arch::x86_64::{
     __m128, __m256, __m256d, _mm256_add_pd, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps,
     _mm256_castpd_ps, _mm256_castps128_ps256, _mm256_castps256_ps128, _mm256_castps_pd,
-    _mm256_cmp_pd, _mm256_cmp_ps, _mm256_cvtpd_ps, _mm256_cvtps_pd, _mm256_div_pd,
-    _mm256_extractf128_ps, _mm256_insertf128_ps, _mm256_movemask_pd, _mm256_movemask_ps,
-    _mm256_mul_pd, _mm256_mul_ps, _mm256_or_ps, _mm256_set1_pd, _mm256_set1_ps, _mm256_setzero_ps,
-    _mm256_sub_pd, _mm256_sub_ps, _mm256_unpackhi_pd, _mm256_unpackhi_ps, _mm256_unpacklo_pd,
-    _mm256_unpacklo_ps, _mm_loadu_ps, _mm_storeu_ps, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LE_OQ,
-    _CMP_NGT_UQ,
+    _mm256_cmp_pd, _mm256_cvtpd_ps, _mm256_cvtps_pd, _mm256_div_pd, _mm256_extractf128_ps,
+    _mm256_insertf128_ps, _mm256_max_pd, _mm256_movemask_pd, _mm256_mul_pd, _mm256_mul_ps,
+    _mm256_or_ps, _mm256_set1_pd, _mm256_set1_ps, _mm256_setzero_ps, _mm256_sub_pd,
+    _mm256_unpackhi_pd, _mm256_unpackhi_ps, _mm256_unpacklo_pd, _mm256_unpacklo_ps, _mm_loadu_ps,
+    _mm_storeu_ps, _CMP_GT_OQ, _CMP_LE_OQ, _CMP_NGT_UQ,
 };
 
 /// x86-64 with AVX (compiled only where `target_feature = "avx"`).
@@ -69,16 +68,8 @@ impl Isa for Avx {
         unsafe { _mm256_add_ps(a, b) }
     }
     #[inline(always)]
-    fn sub(a: __m256, b: __m256) -> __m256 {
-        unsafe { _mm256_sub_ps(a, b) }
-    }
-    #[inline(always)]
     fn mul(a: __m256, b: __m256) -> __m256 {
         unsafe { _mm256_mul_ps(a, b) }
-    }
-    #[inline(always)]
-    fn max(a: __m256, b: __m256) -> __m256 {
-        unsafe { core::arch::x86_64::_mm256_max_ps(a, b) }
     }
     #[inline(always)]
     fn and(a: __m256, b: __m256) -> __m256 {
@@ -91,22 +82,6 @@ impl Isa for Avx {
     #[inline(always)]
     fn or(a: __m256, b: __m256) -> __m256 {
         unsafe { _mm256_or_ps(a, b) }
-    }
-    #[inline(always)]
-    fn le(a: __m256, b: __m256) -> __m256 {
-        unsafe { _mm256_cmp_ps::<_CMP_LE_OQ>(a, b) }
-    }
-    #[inline(always)]
-    fn not_gt(a: __m256, b: __m256) -> __m256 {
-        unsafe { _mm256_cmp_ps::<_CMP_NGT_UQ>(a, b) }
-    }
-    #[inline(always)]
-    fn ge(a: __m256, b: __m256) -> __m256 {
-        unsafe { _mm256_cmp_ps::<_CMP_GE_OQ>(a, b) }
-    }
-    #[inline(always)]
-    fn bits(a: __m256) -> u32 {
-        unsafe { _mm256_movemask_ps(a) as u32 }
     }
     #[inline(always)]
     fn add_d(a: __m256d, b: __m256d) -> __m256d {
@@ -127,6 +102,18 @@ impl Isa for Avx {
     #[inline(always)]
     fn gt_d(a: __m256d, b: __m256d) -> __m256d {
         unsafe { _mm256_cmp_pd::<_CMP_GT_OQ>(a, b) }
+    }
+    #[inline(always)]
+    fn le_d(a: __m256d, b: __m256d) -> __m256d {
+        unsafe { _mm256_cmp_pd::<_CMP_LE_OQ>(a, b) }
+    }
+    #[inline(always)]
+    fn not_gt_d(a: __m256d, b: __m256d) -> __m256d {
+        unsafe { _mm256_cmp_pd::<_CMP_NGT_UQ>(a, b) }
+    }
+    #[inline(always)]
+    fn max_d(a: __m256d, b: __m256d) -> __m256d {
+        unsafe { _mm256_max_pd(a, b) }
     }
     #[inline(always)]
     fn bits_d(a: __m256d) -> u32 {

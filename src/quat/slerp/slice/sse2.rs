@@ -7,11 +7,10 @@ use super::steps::Isa;
 use super::Slerped;
 use crate::Quat;
 use core::arch::x86_64::{
-    __m128, __m128d, _mm_add_pd, _mm_add_ps, _mm_and_ps, _mm_andnot_ps, _mm_cmpge_ps, _mm_cmpgt_pd,
-    _mm_cmple_ps, _mm_cmpngt_ps, _mm_cvtpd_ps, _mm_cvtps_pd, _mm_div_pd, _mm_loadu_ps,
-    _mm_movehl_ps, _mm_movelh_ps, _mm_movemask_pd, _mm_movemask_ps, _mm_mul_pd, _mm_mul_ps,
-    _mm_or_ps, _mm_set1_pd, _mm_set1_ps, _mm_setzero_ps, _mm_storeu_ps, _mm_sub_pd, _mm_sub_ps,
-    _mm_unpackhi_ps, _mm_unpacklo_ps,
+    __m128, __m128d, _mm_add_pd, _mm_add_ps, _mm_and_ps, _mm_andnot_ps, _mm_cmpgt_pd, _mm_cmple_pd,
+    _mm_cmpngt_pd, _mm_cvtpd_ps, _mm_cvtps_pd, _mm_div_pd, _mm_loadu_ps, _mm_max_pd, _mm_movehl_ps,
+    _mm_movelh_ps, _mm_movemask_pd, _mm_mul_pd, _mm_mul_ps, _mm_or_ps, _mm_set1_pd, _mm_set1_ps,
+    _mm_setzero_ps, _mm_storeu_ps, _mm_sub_pd, _mm_unpackhi_ps, _mm_unpacklo_ps,
 };
 
 /// x86-64 with SSE2 (compiled only where `target_feature = "sse2"`).
@@ -43,16 +42,8 @@ impl Isa for Sse2 {
         unsafe { _mm_add_ps(a, b) }
     }
     #[inline(always)]
-    fn sub(a: __m128, b: __m128) -> __m128 {
-        unsafe { _mm_sub_ps(a, b) }
-    }
-    #[inline(always)]
     fn mul(a: __m128, b: __m128) -> __m128 {
         unsafe { _mm_mul_ps(a, b) }
-    }
-    #[inline(always)]
-    fn max(a: __m128, b: __m128) -> __m128 {
-        unsafe { core::arch::x86_64::_mm_max_ps(a, b) }
     }
     #[inline(always)]
     fn and(a: __m128, b: __m128) -> __m128 {
@@ -65,22 +56,6 @@ impl Isa for Sse2 {
     #[inline(always)]
     fn or(a: __m128, b: __m128) -> __m128 {
         unsafe { _mm_or_ps(a, b) }
-    }
-    #[inline(always)]
-    fn le(a: __m128, b: __m128) -> __m128 {
-        unsafe { _mm_cmple_ps(a, b) }
-    }
-    #[inline(always)]
-    fn not_gt(a: __m128, b: __m128) -> __m128 {
-        unsafe { _mm_cmpngt_ps(a, b) }
-    }
-    #[inline(always)]
-    fn ge(a: __m128, b: __m128) -> __m128 {
-        unsafe { _mm_cmpge_ps(a, b) }
-    }
-    #[inline(always)]
-    fn bits(a: __m128) -> u32 {
-        unsafe { _mm_movemask_ps(a) as u32 }
     }
     #[inline(always)]
     fn add_d(a: __m128d, b: __m128d) -> __m128d {
@@ -101,6 +76,18 @@ impl Isa for Sse2 {
     #[inline(always)]
     fn gt_d(a: __m128d, b: __m128d) -> __m128d {
         unsafe { _mm_cmpgt_pd(a, b) }
+    }
+    #[inline(always)]
+    fn le_d(a: __m128d, b: __m128d) -> __m128d {
+        unsafe { _mm_cmple_pd(a, b) }
+    }
+    #[inline(always)]
+    fn not_gt_d(a: __m128d, b: __m128d) -> __m128d {
+        unsafe { _mm_cmpngt_pd(a, b) }
+    }
+    #[inline(always)]
+    fn max_d(a: __m128d, b: __m128d) -> __m128d {
+        unsafe { _mm_max_pd(a, b) }
     }
     #[inline(always)]
     fn bits_d(a: __m128d) -> u32 {

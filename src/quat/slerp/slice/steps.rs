@@ -28,9 +28,11 @@
 //! on the default target (SSE2) 9.2 ns per pair here against 12.1 for the
 //! portable lanes (`slerp_slice`) and 10.1 against 13.4
 //! (`RigTForm::interpolate_slice`); with `-C target-cpu=x86-64-v3` (AVX)
-//! 4.9 against 8.7 and 5.7 against 9.3. Two blocks a step suit AVX's
-//! sixteen registers of eight lanes, four SSE2's of four (three measured
-//! the same, six and, with AVX, three slower).
+//! 4.9 against 8.7 and 5.7 against 9.3. Two blocks a step suit both AVX's
+//! sixteen registers of eight lanes and SSE2's of four: with the squared
+//! norms and dot products in f64, more blocks make the compiler keep
+//! registers on the stack (SSE2 with four blocks 7.3 against 5.6 ns per
+//! pair, three 5.9, one 7.3; AVX with one 4.0 against 3.3).
 //!
 //! [`Pair::of`]: super::super::in_f64::Pair::of
 //! [`Pair::applies`]: super::super::in_f64::Pair::applies
@@ -41,7 +43,6 @@ use super::super::in_f64::{NORM_SQUARED_LIMIT, SMALL_ANGLE_SQUARED_F64};
 use super::super::kernels_f64::{ATAN as ATAN_F64, SIN as SIN_F64};
 use super::super::NEARLY_UNIT;
 use super::Slerped;
-use crate::float::SQUARES_UNDERFLOW;
 
 /// An instruction set's registers and the operations the evaluation
 /// takes, each one instruction (or a fixed few), IEEE 754's operation on
@@ -62,26 +63,14 @@ pub(super) trait Isa {
     fn splat_d(x: f64) -> Self::D;
     /// `a + b`.
     fn add(a: Self::F, b: Self::F) -> Self::F;
-    /// `a - b`.
-    fn sub(a: Self::F, b: Self::F) -> Self::F;
     /// `a * b`.
     fn mul(a: Self::F, b: Self::F) -> Self::F;
-    /// `if a > b { a } else { b }` (`b` where either is NaN).
-    fn max(a: Self::F, b: Self::F) -> Self::F;
     /// Bitwise `a & b`.
     fn and(a: Self::F, b: Self::F) -> Self::F;
     /// Bitwise `!a & b`.
     fn and_not(a: Self::F, b: Self::F) -> Self::F;
     /// Bitwise `a | b`.
     fn or(a: Self::F, b: Self::F) -> Self::F;
-    /// All ones where `a <= b`, else zeros (false for NaN).
-    fn le(a: Self::F, b: Self::F) -> Self::F;
-    /// All ones where `!(a > b)`, else zeros (true for NaN).
-    fn not_gt(a: Self::F, b: Self::F) -> Self::F;
-    /// All ones where `a >= b`, else zeros (false for NaN).
-    fn ge(a: Self::F, b: Self::F) -> Self::F;
-    /// The sign bits of the lanes, lane `k` in bit `k`.
-    fn bits(a: Self::F) -> u32;
     /// `a + b` in f64.
     fn add_d(a: Self::D, b: Self::D) -> Self::D;
     /// `a - b` in f64.
@@ -90,8 +79,14 @@ pub(super) trait Isa {
     fn mul_d(a: Self::D, b: Self::D) -> Self::D;
     /// `a / b` in f64.
     fn div_d(a: Self::D, b: Self::D) -> Self::D;
-    /// All ones where `a > b`, else zeros.
+    /// All ones where `a > b`, else zeros (false for NaN).
     fn gt_d(a: Self::D, b: Self::D) -> Self::D;
+    /// All ones where `a <= b`, else zeros (false for NaN).
+    fn le_d(a: Self::D, b: Self::D) -> Self::D;
+    /// All ones where `!(a > b)`, else zeros (true for NaN).
+    fn not_gt_d(a: Self::D, b: Self::D) -> Self::D;
+    /// `if a > b { a } else { b }` in f64 (`b` where either is NaN).
+    fn max_d(a: Self::D, b: Self::D) -> Self::D;
     /// The sign bits of the f64 lanes, lane `k` in bit `k`.
     fn bits_d(a: Self::D) -> u32;
     /// The low and the high half of the f32 lanes, each widened to f64.
@@ -196,82 +191,72 @@ fn evaluate<I: Isa, T: Slerped, const BLOCKS: usize, const CHAINS: usize, const 
     alpha: f32,
     o: &mut [T; PAIRS],
 ) -> u32 {
-    let (add, sub, mul) = (I::add, I::sub, I::mul);
+    let (add, mul) = (I::add, I::mul);
     let (add_d, sub_d, mul_d, div_d) = (I::add_d, I::sub_d, I::mul_d, I::div_d);
     let splat = I::splat_d;
     let sign32 = I::splat(-0.0);
-    let dot = |p: [I::F; 4], q: [I::F; 4]| {
-        add(
-            add(add(mul(p[0], q[0]), mul(p[1], q[1])), mul(p[2], q[2])),
-            mul(p[3], q[3]),
+    // `(x x' + z z') + (y y' + w w')` of f64 components `[w, x, y, z]`.
+    let dot = |p: [I::D; 4], q: [I::D; 4]| {
+        add_d(
+            add_d(mul_d(p[1], q[1]), mul_d(p[3], q[3])),
+            add_d(mul_d(p[2], q[2]), mul_d(p[0], q[0])),
         )
     };
-    let minor = |p, q, r, s| sub(mul(p, s), mul(q, r));
-    let sq = |x| mul(x, x);
 
-    // Pair::of and Pair::applies, block by block: the squared norms, the
-    // dot product, the six minors and the squared wedge; the bounds on the
-    // squared norms are checked once (slerp_f64 checks them twice, with
-    // the same result).
+    // Pair::of and Pair::applies, register by register: the quaternions
+    // widened to f64 (the low half of block `j`'s f32 registers to f64
+    // register `2j`, the high half to `2j + 1`), their squared norms and
+    // dot product, the squared lengths of their difference and sum (as
+    // `Pair::near` and `Pair::far`), and the checks.
     let zero = I::splat(0.0);
     let (mut a, mut b) = ([[zero; 4]; BLOCKS], [[zero; 4]; BLOCKS]);
-    let (mut dots, mut wedges, mut applies) = ([zero; BLOCKS], [zero; BLOCKS], [0; BLOCKS]);
-    let (mut norms, mut other_norms) = ([zero; BLOCKS], [zero; BLOCKS]);
+    let zero = splat(0.0);
+    let (mut wa, mut wb) = ([[zero; 4]; CHAINS], [[zero; 4]; CHAINS]);
     let lanes = |j: usize| I::LANES * j..I::LANES * (j + 1);
     for j in 0..BLOCKS {
-        let ([aw, ax, ay, az], [bw, bx, by, bz]) = (I::load(&s[lanes(j)]), I::load(&e[lanes(j)]));
-        let n2 = dot([aw, ax, ay, az], [aw, ax, ay, az]);
-        let on2 = dot([bw, bx, by, bz], [bw, bx, by, bz]);
-        let m = [
-            minor(aw, ax, bw, bx),
-            minor(aw, ay, bw, by),
-            minor(aw, az, bw, bz),
-            minor(ax, ay, bx, by),
-            minor(ax, az, bx, bz),
-            minor(ay, az, by, bz),
-        ];
-        let wedge = add(
-            add(add(sq(m[0]), sq(m[1])), add(sq(m[2]), sq(m[3]))),
-            add(sq(m[4]), sq(m[5])),
-        );
-        let limit = I::splat(NORM_SQUARED_LIMIT);
-        let bounded = I::and(I::le(n2, limit), I::le(on2, limit));
-        let spread = I::and_not(sign32, sub(n2, on2));
-        // `!(spread > NEARLY_UNIT * on2)`: "not greater", true for NaN.
-        let near_unit = I::not_gt(spread, mul(I::splat(NEARLY_UNIT), on2));
-        let resolved = I::ge(wedge, I::splat(SQUARES_UNDERFLOW));
-        applies[j] = I::bits(I::and(I::and(bounded, near_unit), resolved));
-        (a[j], b[j]) = ([aw, ax, ay, az], [bw, bx, by, bz]);
-        // Where the evaluation does not apply, the squared norms may be
-        // zero (a zero quaternion) or NaN: in their place the smallest
-        // normal f32, so that the division below never divides by zero
-        // (which would raise the divide-by-zero exception that slerp
-        // itself does not, a SIGFPE where a program unmasks it). Where it
-        // applies they are at least 2^-50 (the squared wedge, at least
-        // SQUARES_UNDERFLOW = 2^-100, is at most their product) and stay
-        // as they are.
-        let tiny = I::splat(f32::MIN_POSITIVE);
-        (norms[j], other_norms[j]) = (I::max(n2, tiny), I::max(on2, tiny));
-        let dot = dot([aw, ax, ay, az], [bw, bx, by, bz]);
-        (dots[j], wedges[j]) = (dot, wedge);
+        (a[j], b[j]) = (I::load(&s[lanes(j)]), I::load(&e[lanes(j)]));
+        for i in 0..4 {
+            let ([al, ah], [bl, bh]) = (I::halves(a[j][i]), I::halves(b[j][i]));
+            (wa[2 * j][i], wa[2 * j + 1][i]) = (al, ah);
+            (wb[2 * j][i], wb[2 * j + 1][i]) = (bl, bh);
+        }
+    }
+    let (mut applies, mut near, mut far, mut toward) =
+        ([0; CHAINS], [zero; CHAINS], [zero; CHAINS], [zero; CHAINS]);
+    for k in 0..CHAINS {
+        let (p, q) = (wa[k], wb[k]);
+        let (n2, on2, pq) = (dot(p, p), dot(q, q), dot(p, q));
+        let limit = splat(NORM_SQUARED_LIMIT);
+        let bounded = I::bits_d(I::le_d(n2, limit)) & I::bits_d(I::le_d(on2, limit));
+        // `!(|n2 - on2| > NEARLY_UNIT * on2)`, one sign at a time: "not
+        // greater", true for NaN.
+        let allowed = mul_d(splat(f64::from(NEARLY_UNIT)), on2);
+        let near_unit = I::bits_d(I::not_gt_d(sub_d(n2, on2), allowed))
+            & I::bits_d(I::not_gt_d(sub_d(on2, n2), allowed));
+        // `2 |a . b|`, exact: the larger of `2 a . b` and `-2 a . b`.
+        let twice = I::max_d(mul_d(splat(2.0), pq), mul_d(splat(-2.0), pq));
+        let sum = add_d(n2, on2);
+        near[k] = sub_d(sum, twice);
+        let larger = add_d(sum, twice);
+        let unequal = I::bits_d(I::gt_d(larger, near[k]));
+        applies[k] = bounded & near_unit & unequal;
+        // Where the evaluation does not apply, the larger length may be
+        // zero (a zero quaternion) or NaN: the smallest normal f64 in its
+        // place (`max` takes it for NaN), so that the division below never
+        // divides by zero (which would raise the divide-by-zero exception
+        // that slerp itself does not, a SIGFPE where a program unmasks
+        // it). Where it applies, it is above the smaller length, so
+        // positive, and stays as it is.
+        far[k] = I::max_d(larger, splat(f64::MIN_POSITIVE));
+        toward[k] = pq;
     }
 
     // Pair::arc, register by register at each stage: the tangent of the
     // half angle squared (one division, each register on its own, so that
     // none waits for another's), the polynomial, phi^2 and phi / sin(phi).
-    let zero = splat(0.0);
-    let (mut w, mut d) = ([zero; CHAINS], [zero; CHAINS]);
-    for j in 0..BLOCKS {
-        let (n2, on2) = (I::halves(norms[j]), I::halves(other_norms[j]));
-        let (wedge, size) = (I::halves(wedges[j]), I::halves(I::and_not(sign32, dots[j])));
-        for h in 0..2 {
-            let m = mul_d(splat(0.5), add_d(n2[h], on2[h]));
-            (w[2 * j + h], d[2 * j + h]) = (wedge[h], add_d(m, size[h]));
-        }
-    }
     let mut t2 = [zero; CHAINS];
     for k in 0..CHAINS {
-        t2[k] = div_d(w[k], mul_d(d[k], d[k]));
+        t2[k] = div_d(near[k], far[k]);
     }
     let (mut phi2, mut ratio) = ([zero; CHAINS], [zero; CHAINS]);
     for k in 0..CHAINS {
@@ -318,13 +303,16 @@ fn evaluate<I: Isa, T: Slerped, const BLOCKS: usize, const CHAINS: usize, const 
     for j in 0..BLOCKS {
         let c0 = I::join(c0[2 * j], c0[2 * j + 1]);
         let c1 = I::join(c1[2 * j], c1[2 * j + 1]);
-        // (c1 as f32).copysign(dot)
-        let c1 = I::or(I::and_not(sign32, c1), I::and(sign32, dots[j]));
+        // (c1.copysign(dot)) as f32: the sign of the dot product is that
+        // of its rounding to f32.
+        let toward = I::join(toward[2 * j], toward[2 * j + 1]);
+        let c1 = I::or(I::and_not(sign32, c1), I::and(sign32, toward));
         let weigh = |i: usize| add(mul(c0, a[j][i]), mul(c1, b[j][i]));
         I::store([weigh(0), weigh(1), weigh(2), weigh(3)], &mut o[lanes(j)]);
         let past_small = I::bits_d(I::gt_d(phi2[2 * j], small))
             | (I::bits_d(I::gt_d(phi2[2 * j + 1], small)) << half);
-        let lanes_done = applies[j] & past_small;
+        let applies = applies[2 * j] | (applies[2 * j + 1] << half);
+        let lanes_done = applies & past_small;
         for (lane, pair) in I::PAIR_OF_LANE.into_iter().enumerate().take(I::LANES) {
             done |= ((lanes_done >> lane) & 1) << (I::LANES * j + pair);
         }
@@ -395,7 +383,7 @@ mod tests {
 
     #[test]
     fn sse2_lanes_take_exactly_the_pairs_slerp_f64_takes() {
-        lanes_take_exactly_the_pairs_slerp_f64_takes::<Sse2, 4, 8, 16>();
+        lanes_take_exactly_the_pairs_slerp_f64_takes::<Sse2, 2, 4, 8>();
     }
 
     #[cfg(x86_avx_lanes)]
@@ -423,7 +411,7 @@ mod tests {
 
     #[test]
     fn sse2_slices_of_every_length_are_the_single_calls_bit_for_bit() {
-        slices_of_every_length_are_the_single_calls::<Sse2, 4, 8, 16>();
+        slices_of_every_length_are_the_single_calls::<Sse2, 2, 4, 8>();
     }
 
     #[cfg(x86_avx_lanes)]
