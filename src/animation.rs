@@ -205,8 +205,12 @@ mod sealed {
         /// LINEAR between `a` and `b` at `u` in [0, 1].
         fn linear(a: Self, b: Self, u: f32) -> Self;
         /// `s[0] p0 + s[1] m0 + s[2] p1 + s[3] m1`, component by component,
-        /// where the tangents `m0` and `m1` are scaled by `td` first, then
-        /// normalized for rotations.
+        /// where the tangents `m0` and `m1` are `td` times the stored ones,
+        /// then normalized for rotations. Evaluated as `(s[0] p0 + s[2] p1)
+        /// + td (s[1] b0 + s[3] a1)`: the weighted tangents cannot overflow
+        /// (the two weights sum to at most 0.3 in magnitude), and where `td`
+        /// times them does, the result is infinite, never NaN (`0 * inf`
+        /// at a segment's end, or `inf - inf`, would be).
         fn hermite(p0: Self, b0: Self, p1: Self, a1: Self, td: f32, s: [f32; 4]) -> Self;
     }
 
@@ -220,7 +224,7 @@ mod sealed {
         }
         fn hermite(p0: Self, b0: Self, p1: Self, a1: Self, td: f32, s: [f32; 4]) -> Self {
             let c = |p0: f32, b0: f32, p1: f32, a1: f32| {
-                s[0] * p0 + s[1] * (b0 * td) + s[2] * p1 + s[3] * (a1 * td)
+                (s[0] * p0 + s[2] * p1) + td * (s[1] * b0 + s[3] * a1)
             };
             Quat {
                 x: c(p0.x, b0.x, p1.x, a1.x),
@@ -243,7 +247,7 @@ mod sealed {
         }
         fn hermite(p0: Self, b0: Self, p1: Self, a1: Self, td: f32, s: [f32; 4]) -> Self {
             let c = |p0: f32, b0: f32, p1: f32, a1: f32| {
-                s[0] * p0 + s[1] * (b0 * td) + s[2] * p1 + s[3] * (a1 * td)
+                (s[0] * p0 + s[2] * p1) + td * (s[1] * b0 + s[3] * a1)
             };
             Cvec3 {
                 x: c(p0.x, b0.x, p1.x, a1.x),

@@ -244,6 +244,32 @@ fn one_key_is_the_value_at_every_time_and_nan_time_is_nan() {
     assert!(s.sample(f32::NAN).x.is_nan());
 }
 
+/// Tangents whose product with a long interval overflows f32: the sample
+/// is finite or infinite, never NaN, at a segment's end (where a weight is
+/// 0, and `0 * inf` would be NaN) and inside it (where tangent terms of
+/// opposite signs could make `inf - inf`).
+#[test]
+fn overflowing_tangents_make_no_nan() {
+    let big = 2.9e7;
+    let times = [-1.2e31, -2.1e-28, 0.0];
+    let mut values = [Cvec3::ZERO; 9];
+    values[2] = Cvec3::new(big, -big, 0.0); // out-tangent of key 0
+    values[3] = Cvec3::new(big, big, big); // in-tangent of key 1
+    let s = Sampler::new(Interpolation::CubicSpline, &times, &values).unwrap();
+    for t in [-2.1039314e-28, -1e31, -6e30, -1e30, -1.0, -2.1e-28, -1e-40] {
+        let v = s.sample(t);
+        assert!(
+            !v.x.is_nan() && !v.y.is_nan() && !v.z.is_nan(),
+            "{t}: {v:?}"
+        );
+    }
+    let rotations = [Quat::from_xyzw(big, -big, big, big); 9];
+    let s = Sampler::new(Interpolation::CubicSpline, &times, &rotations).unwrap();
+    for t in [-2.1039314e-28, -6e30, -1.0] {
+        assert!(s.sample(t).is_finite(), "{t}");
+    }
+}
+
 #[test]
 fn cubic_rotations_through_zero_give_identity() {
     // q, then -q, zero tangents: the Hermite sum is zero halfway.
