@@ -402,6 +402,24 @@ pub(super) mod tests {
         assert!(a.slerp_f64(past, 0.5).is_some());
     }
 
+    /// The pair is not formed (no dot product, which would make NaN of
+    /// `inf * 0`) when either input's squared norm is beyond the bound,
+    /// infinite or NaN, whichever of the two it is.
+    #[test]
+    fn pairs_beyond_the_bound_are_not_formed() {
+        let (a, _) = ordinary_pair();
+        let beyond = [
+            Quat::from_wxyz(f32::INFINITY, 0.0, 0.0, 0.0),
+            Quat::from_wxyz(0.0, 7e4, 0.0, 0.0),
+            Quat::NAN,
+        ];
+        for q in beyond {
+            assert!(Pair::checked(a, q).is_none(), "{q:?}");
+            assert!(Pair::checked(q, a).is_none(), "{q:?}");
+        }
+        assert!(Pair::checked(a, a.map(|c| c * 6e4)).is_some());
+    }
+
     /// `near` and `far` are `|a - cn(b)|^2` and `|a + cn(b)|^2`, against
     /// the sums of the squared f64 differences and sums of the components
     /// (exact but for the last bits), relatively: `far` within 2^-50,
