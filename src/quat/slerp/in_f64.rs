@@ -402,6 +402,23 @@ pub(super) mod tests {
         assert!(a.slerp_f64(past, 0.5).is_some());
     }
 
+    /// Pairs at an exact right angle (a zero dot product, `near == far`),
+    /// where neither sign of `b` is shorter, are left to the f32
+    /// evaluation, so that `slerp(a, b)` and `slerp(a, -b)` choose alike.
+    #[test]
+    fn pairs_at_a_right_angle_are_left_to_the_f32_evaluation() {
+        let a = Quat::from_xyzw(1.0, 0.0, 0.0, 0.0);
+        for b in [
+            Quat::from_xyzw(0.0, 1.0, 0.0, 0.0),
+            Quat::from_xyzw(0.0, 0.0, 0.6, 0.8),
+        ] {
+            let pair = Pair::of(a, b);
+            assert_eq!(pair.near(), pair.far());
+            assert!(!pair.applies());
+            assert!(a.slerp_f64(b, 0.5).is_none() && a.slerp_f64(-b, 0.5).is_none());
+        }
+    }
+
     /// The pair is not formed (no dot product, which would make NaN of
     /// `inf * 0`) when either input's squared norm is beyond the bound,
     /// infinite or NaN, whichever of the two it is.
