@@ -27,9 +27,9 @@ impl Quat {
     ///   hand: SSE2's on every target with SSE, AVX's where AVX is enabled
     ///   at compile time (`-C target-cpu=x86-64-v3`, `-C target-cpu=native`
     ///   on a processor with AVX, or `-C target-feature=+avx`). On a Zen 3
-    ///   EPYC that is 9.2 ns per pair with SSE2 and 4.9 with AVX, where the
-    ///   compiler's own vectorization of the same evaluation takes 12.1 and
-    ///   8.7;
+    ///   EPYC that is 5.6 ns per pair with SSE2 and 3.3 with AVX, where a
+    ///   loop of the fastest peer's single slerp takes 11.1 and 8.0
+    ///   (`cargo bench -p rigtform-compare --bench ops`, `slerp slice`);
     /// - on AArch64, blocks of 64 pairs that the compiler vectorizes (the
     ///   square root included: the crate's square root is the processor's
     ///   instruction, through an intrinsic the vectorizer sees), and on
