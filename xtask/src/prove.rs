@@ -487,37 +487,21 @@ pub fn prove_all() -> Result<()> {
                 c.name, c.known
             ));
         }
+        // The models behind a figure, joined, and their time together.
+        let models_and_time = |claims: &[&(&Proven, &Claim)]| {
+            let names: Vec<_> = claims.iter().map(|(pr, _)| pr.model.as_str()).collect();
+            let seconds: f64 = claims.iter().map(|(pr, _)| pr.time.as_secs_f64()).sum();
+            (names.join("+"), format!("{seconds:.1} s"))
+        };
         let (proof, model, time) = match (bound, looser) {
-            (Some((_, cl)), _) => (
-                format!("{:.3e}", cl.value),
-                bounds
-                    .iter()
-                    .map(|(pr, _)| pr.model.as_str())
-                    .collect::<Vec<_>>()
-                    .join("+"),
-                format!(
-                    "{:.1} s",
-                    bounds
-                        .iter()
-                        .map(|(pr, _)| pr.time.as_secs_f64())
-                        .sum::<f64>()
-                ),
-            ),
-            (None, Some((_, cl))) => (
-                format!("{:.3e}*", cl.value),
-                loosers
-                    .iter()
-                    .map(|(pr, _)| pr.model.as_str())
-                    .collect::<Vec<_>>()
-                    .join("+"),
-                format!(
-                    "{:.1} s",
-                    loosers
-                        .iter()
-                        .map(|(pr, _)| pr.time.as_secs_f64())
-                        .sum::<f64>()
-                ),
-            ),
+            (Some((_, cl)), _) => {
+                let (model, time) = models_and_time(&bounds);
+                (format!("{:.3e}", cl.value), model, time)
+            }
+            (None, Some((_, cl))) => {
+                let (model, time) = models_and_time(&loosers);
+                (format!("{:.3e}*", cl.value), model, time)
+            }
             (None, None) => ("-".into(), "-".into(), "-".into()),
         };
         let _ = writeln!(
