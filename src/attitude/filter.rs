@@ -214,10 +214,12 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///   samples near the gate's edge fall on the other side in the rest of
 ///   the trial). The first field sets the reference; if the next one
 ///   disagrees, it replaces it (the first may have been a glitch), until a
-///   field passes the gate. A gate shut for 60 s (a new environment, or a
-///   burst of identical glitches that confirmed itself as the first
-///   fields) gives the reference to the current field, and the hard-iron
-///   estimate starts over from zero. The estimate moves towards a reading
+///   field passes the gate. A gate shut for a net 60 s (a new
+///   environment, or a burst of identical glitches that confirmed itself
+///   as the first fields; each field that passes takes back its own `dt`,
+///   so a few that pass by chance do not put the renewal off by a minute)
+///   gives the reference to the current field, and the hard-iron estimate
+///   starts over from zero. The estimate moves towards a reading
 ///   by at most the fraction `1 - exp(-dt / tau_mag)` of the reference's
 ///   length, and stays within twice that length (a step beyond is not
 ///   taken); a usable reading that the estimate, taken off, would make
@@ -295,8 +297,9 @@ pub struct OrientationFilter {
     /// Negative until a field has passed the disturbance gate (until then
     /// the reference is one sample's, and a field outside the gate
     /// replaces it and sets the heading: the first may have been a
-    /// glitch); then the seconds for which the gate has been shut since a
-    /// field last passed it.
+    /// glitch); then the net seconds for which the gate has been shut:
+    /// up by `dt` for each field it shuts out, down by `dt` (not below
+    /// zero) for each it passes.
     mag_shut: f32,
     /// The variance of the bias estimate, (rad/s)^2.
     bias_variance: f32,
@@ -796,7 +799,7 @@ impl OrientationFilter {
         if first {
             self.mag_reference = [seen.x, seen.y];
         } else if !inside && self.mag_shut >= MAG_REFERENCE_TAU {
-            // The gate has been shut for MAG_REFERENCE_TAU: a new
+            // The gate has been shut for a net MAG_REFERENCE_TAU: a new
             // environment, or a burst of identical glitches that confirmed
             // itself as the first fields. The field becomes the reference,
             // and corrects the heading as any field that passes does; the
@@ -881,7 +884,13 @@ impl OrientationFilter {
                 }
                 return None;
             }
-            self.mag_shut = 0.0;
+            // A field that passes takes back as much shut time as it
+            // lasts, no more: a few fields that pass amid a minute of shut
+            // gate (a disturbance or a wrong reference that agrees with
+            // them by chance) do not confirm the reference, and the
+            // renewal comes as late as the fields that passed, not a minute
+            // after them.
+            self.mag_shut = max(self.mag_shut - dt, 0.0);
         }
         // The field's angle east of north; turning by it about +z brings
         // it to north.

@@ -742,6 +742,41 @@ fn a_burst_of_glitches_as_the_first_fields_is_replaced_after_a_minute() {
     assert!(q.angle_to(truth) < 0.01, "{q:?}");
 }
 
+/// Fields that pass amid a shut gate take back their own time, no more:
+/// after 30 s of a disturbance (fields half again as strong and half as
+/// strong, in turn, which leave the reference where it was), 1 s of the
+/// reference's field, and the disturbance again, the reference is renewed
+/// after 31 s more (a net 60 s of shut gate), not after another minute.
+#[test]
+fn fields_that_pass_amid_a_shut_gate_take_back_only_their_time() {
+    let level = Cvec3::new(0.0, 0.0, G);
+    let mut f = settled_on_the_field();
+    let (mut shut, mut passed) = (0, 0);
+    let mut run = |f: &mut OrientationFilter, fields: [Cvec3; 2], samples: u32| {
+        for i in 0..samples {
+            f.update_with_mag(Cvec3::ZERO, level, fields[i as usize % 2], 0.01);
+            if f.diagnostics().mag_ignored {
+                shut += 1;
+            } else {
+                passed += 1;
+            }
+            if f.mag_shut == 0.0 && i > 0 {
+                return;
+            }
+        }
+    };
+    let disturbance = [FIELD * 1.5, FIELD * 0.5];
+    run(&mut f, disturbance, 3000);
+    run(&mut f, [FIELD; 2], 100);
+    run(&mut f, disturbance, 6000);
+    let seconds = shut as f32 * 0.01;
+    assert!((seconds - 61.0).abs() < 0.05, "gate shut for {seconds} s");
+    assert_eq!(
+        passed, 101,
+        "the 1 s of the reference's field and the renewal"
+    );
+}
+
 /// A new environment whose field is 30 % stronger, or twice as strong, is
 /// accepted in the end: the time until the gate opens.
 #[test]
