@@ -155,7 +155,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
 /// LTO), counted by `cargo xtask filter-cost`, which fails above the
 /// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
-/// state: 1,465 (6D) and 2,082 (9D).
+/// state: 1,466 (6D) and 2,104 (9D).
 ///
 /// # Bad input
 ///
@@ -204,9 +204,11 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///   it). Below the bound a reading is a real specific force to the
 ///   filter: one of 16 g on each axis moves the estimate by 1°, with no
 ///   correction off.
-/// - Magnetometer NaN, infinite, zero, without horizontal part, or outside
+/// - Magnetometer NaN, infinite, zero, without horizontal part, outside
 ///   the disturbance gate (`1e30`, `1e6`, int16 full scale, a field
-///   opposite to the reference): flagged (`mag_ignored`), no heading
+///   opposite to the reference), or weaker than the gate's radius (whose
+///   direction, once the hard-iron estimate is taken off, would be the
+///   estimate's): flagged (`mag_ignored`), no heading
 ///   correction for that sample, and the reference field moves towards it
 ///   by at most the fraction `1 - exp(-dt / 60 s)` of its own length (it
 ///   follows no faster than it would a field its own length away): the
@@ -786,7 +788,13 @@ impl OrientationFilter {
         // each component. Its norm may overflow to infinity.
         let offset = seen - reference;
         let distance = offset.norm();
-        let inside = distance <= radius;
+        // The reading itself must be stronger than the gate's radius: a
+        // weaker one is, for all the gate can tell, zero, and its
+        // direction once the hard-iron estimate is taken off is the
+        // estimate's, not the earth's (a reference and an estimate grown
+        // from huge glitches would otherwise agree with any small reading
+        // and turn the heading to the estimate).
+        let inside = distance <= radius && mag.norm_squared() > radius * radius;
         // No reference yet, or one sample's that the next field disputes:
         // the field sets the heading at once and becomes the reference.
         let confirmed = self.mag_shut >= 0.0;

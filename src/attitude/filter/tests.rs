@@ -742,6 +742,20 @@ fn a_burst_of_glitches_as_the_first_fields_is_replaced_after_a_minute() {
     assert!(q.angle_to(truth) < 0.01, "{q:?}");
 }
 
+/// A reading weaker than the gate's radius fails the gate even where the
+/// hard-iron estimate, taken off, would make it the reference's field:
+/// its direction would be the estimate's. One a fifth of the field passes.
+#[test]
+fn a_reading_weaker_than_the_gate_radius_fails_the_gate() {
+    let level = Cvec3::new(0.0, 0.0, G);
+    for (share, passes) in [(0.01, false), (0.05, false), (0.2, true)] {
+        let mut f = settled_on_the_field();
+        f.hard_iron = -FIELD * (1.0 - share);
+        f.update_with_mag(Cvec3::ZERO, level, FIELD * share, 0.01);
+        assert_eq!(!f.diagnostics().mag_ignored, passes, "{share}");
+    }
+}
+
 /// Fields that pass amid a shut gate take back their own time, no more:
 /// after 30 s of a disturbance (fields half again as strong and half as
 /// strong, in turn, which leave the reference where it was), 1 s of the
