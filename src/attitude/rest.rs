@@ -1,6 +1,7 @@
 //! The rest detector of the [`OrientationFilter`](super::OrientationFilter):
 //! while the sensor lies still, the gyro reads its bias.
 
+use super::filter::MAX_SPECIFIC_FORCE;
 use super::low_pass::{low_pass, smoothing_factor};
 use super::FilterParams;
 use crate::vec::Cvec3;
@@ -40,9 +41,15 @@ impl RestDetector {
     /// the accelerometer is within `rest_acc` of gravity of its own.
     #[inline]
     pub(super) fn update(&mut self, gyr: Cvec3, acc: Cvec3, dt: f32, p: &FilterParams) {
-        // NaN fails the test too.
+        // Before the first sample, or with a gyro low-pass beyond half a
+        // turn per `dt` (no usable reading at this sample rate is; it is
+        // left from readings at a far shorter `dt`, 1e23 rad/s at 1e-26 s,
+        // which would take half a minute to decay below `max_bias` and
+        // hide rest meanwhile): the low-passes start at this sample.
+        // NaN fails the tests too.
+        let half_turn = core::f32::consts::PI * core::f32::consts::PI;
         #[allow(clippy::neg_cmp_op_on_partial_ord)]
-        if !(self.time >= 0.0) {
+        if !(self.time >= 0.0 && (self.gyro * dt).norm_squared() <= half_turn) {
             *self = Self {
                 gyro: gyr,
                 acc,
@@ -52,14 +59,17 @@ impl RestDetector {
         let alpha = smoothing_factor(dt, REST_LOW_PASS_TAU);
         let gyro = low_pass(self.gyro, gyr, alpha);
         let acc_lp = low_pass(self.acc, acc, alpha);
-        // Overflowed (the filter takes specific forces up to 1000 gravity,
-        // which only a `gravity` near f32::MAX makes overflow): the
-        // low-passes restart at this sample. The gyro's cannot: each step
-        // moves it by at most the fraction alpha of a turn of half a
-        // revolution per `dt`, 2 pi rad/s.
-        // NaN fails the test too.
+        // Beyond the largest specific force the filter takes (left by
+        // parameters that were changed since: a low-pass of samples near
+        // a `gravity` of 1e36 would take a minute to forget them, and
+        // hide rest meanwhile), or overflowed: the low-passes restart at
+        // this sample.
+        let bound = MAX_SPECIFIC_FORCE * p.gravity;
+        let length_squared = acc_lp.norm_squared();
+        // NaN fails the test too; `bound * bound` may overflow to
+        // infinity, the first test catches an overflowed low-pass.
         #[allow(clippy::neg_cmp_op_on_partial_ord)]
-        if !(acc_lp.norm_squared() <= f32::MAX) {
+        if !(length_squared <= f32::MAX && length_squared <= bound * bound) {
             *self = Self {
                 gyro: gyr,
                 acc,
@@ -141,6 +151,39 @@ mod tests {
         let jolt = Cvec3::new(2.0 * p.rest_acc * p.gravity, 0.0, 0.0);
         rest.update(Cvec3::ZERO, gravity() + jolt, DT, &p);
         assert!(!rest.is_resting(&p));
+    }
+
+    /// Steps of `DT` until the detector sees rest, from `rest`, on a still
+    /// sensor.
+    fn steps_to_rest(mut rest: RestDetector, p: &FilterParams) -> u32 {
+        (1..=10_000)
+            .find(|_| {
+                rest.update(Cvec3::ZERO, gravity(), DT, p);
+                rest.is_resting(p)
+            })
+            .unwrap_or(u32::MAX)
+    }
+
+    /// Low-passes left by readings that no longer fit (a gyro reading of
+    /// 1e23 rad/s, usable at a `dt` of 1e-26 s; accelerometer readings
+    /// near a `gravity` of 1e18 that the parameters have since given up)
+    /// restart at the next sample: rest is seen after `rest_time`, as
+    /// from a new detector (a step later where the restart ends the
+    /// step), not after the 20 to 30 s they would take to decay.
+    #[test]
+    fn low_passes_that_no_longer_fit_restart() {
+        let p = FilterParams::DEFAULT;
+        let fresh = steps_to_rest(RestDetector::new(), &p);
+        assert!(fresh <= (p.rest_time / DT) as u32 + 2, "{fresh}");
+        let mut spun = RestDetector::new();
+        spun.update(Cvec3::new(0.0, 1e23, 0.0), gravity(), 1e-26, &p);
+        assert_eq!(steps_to_rest(spun, &p), fresh);
+        let mut heavy = RestDetector::new();
+        let huge = FilterParams { gravity: 1e18, ..p };
+        for _ in 0..10 {
+            heavy.update(Cvec3::ZERO, Cvec3::new(0.0, 0.0, 1e18), DT, &huge);
+        }
+        assert_eq!(steps_to_rest(heavy, &p), fresh + 1);
     }
 
     #[test]
