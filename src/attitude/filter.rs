@@ -33,7 +33,7 @@ const IMPULSE_PEAK: f32 = 0.644_794;
 /// 6e-5 g) whatever `dt` is; a sample's own bound (see
 /// [`plausible_specific_force`]) is smaller at every sample rate below
 /// 4 kHz.
-const MAX_SPECIFIC_FORCE: f32 = 1000.0;
+pub(super) const MAX_SPECIFIC_FORCE: f32 = 1000.0;
 
 /// The fraction of `gyro_range` from which a reading counts as saturated.
 const SATURATION: f32 = 0.99;
@@ -89,7 +89,9 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///    of the horizontal parts, along the field's own horizontal direction,
 ///    and of the vertical parts), with `tau_mag`, over which the fields of
 ///    an earth-fixed disturbance turn and average out. It learns only
-///    while the sensor turns faster than `rest_gyro`, once settled, and
+///    while the sensor turns faster than `rest_gyro` and is not at rest
+///    (the rest detector reads the raw gyro, so a stale bias estimate
+///    cannot make a still sensor seem to turn), once settled, and
 ///    while the inclination is known (corrected in that sample, slower
 ///    than `max_bias`: the dip depends on it); its step is clipped as the
 ///    reference's. While the sensor turns slower, nothing tells the two
@@ -155,7 +157,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
 /// LTO), counted by `cargo xtask filter-cost`, which fails above the
 /// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
-/// state: 1,466 (6D) and 2,104 (9D).
+/// state: 1,478 (6D) and 2,120 (9D).
 ///
 /// # Bad input
 ///
@@ -640,14 +642,15 @@ impl OrientationFilter {
         self.flags.set(Flags::ACC_IGNORED, !corrected);
         let drift = drift.unwrap_or(Cvec3::ZERO);
         self.acc_error = drift.norm();
-        // The hard-iron estimate learns while the sensor turns (see
-        // `correct_heading`), once settled, and while the inclination is
-        // known: corrected in this sample (the accelerometer average is
-        // within its gate of gravity), and slower than `max_bias` (a
+        // The hard-iron estimate learns while the sensor turns and is not
+        // at rest (see `correct_heading`), once settled, and while the
+        // inclination is known: corrected in this sample (the
+        // accelerometer average is within its gate of gravity), and
+        // slower than `max_bias` (a
         // faster correction is convergence, after a gap in the gyro, say,
         // whose attitude gets the field's dip wrong).
         let heading = mag.map(|mag| {
-            let turning = (gyr - self.bias).norm_squared() > p.rest_gyro * p.rest_gyro;
+            let turning = !resting && (gyr - self.bias).norm_squared() > p.rest_gyro * p.rest_gyro;
             let level = corrected && self.acc_error <= p.max_bias * dt;
             self.correct_heading(mag, dt, turning, settled && level)
         });

@@ -756,6 +756,23 @@ fn a_reading_weaker_than_the_gate_radius_fails_the_gate() {
     }
 }
 
+/// At rest the sensor does not turn, whatever a stale bias estimate says
+/// (here 0.065 rad/s off about the vertical, so that the estimate turns
+/// faster than `rest_gyro`): the hard-iron estimate does not learn from a
+/// field 5 % stronger than the reference while the rest detector sees
+/// rest.
+#[test]
+fn the_hard_iron_estimate_does_not_learn_at_rest() {
+    let level = Cvec3::new(0.0, 0.0, G);
+    let mut f = settled_on_the_field();
+    f.set_bias(Cvec3::new(0.0, 0.0, -0.035));
+    for _ in 0..300 {
+        f.update_with_mag(Cvec3::new(0.0, 0.0, 0.03), level, FIELD * 1.05, 0.01);
+        assert!(f.is_resting() && !f.diagnostics().mag_ignored);
+    }
+    assert_eq!(f.hard_iron, Cvec3::ZERO);
+}
+
 /// Fields that pass amid a shut gate take back their own time, no more:
 /// after 30 s of a disturbance (fields half again as strong and half as
 /// strong, in turn, which leave the reference where it was), 1 s of the
