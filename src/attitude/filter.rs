@@ -157,7 +157,7 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 /// per update on the emulated Cortex-M4F (QEMU mps2-an386, opt-level "s",
 /// LTO), counted by `cargo xtask filter-cost`, which fails above the
 /// budget of 1,600 (6D) and 2,200 (9D) instructions and 256 bytes of
-/// state: 1,478 (6D) and 2,120 (9D).
+/// state: 1,475 (6D) and 2,119 (9D).
 ///
 /// # Bad input
 ///
@@ -222,8 +222,9 @@ const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
 ///   environment, or a burst of identical glitches that confirmed itself
 ///   as the first fields; each field that passes takes back its own `dt`,
 ///   so a few that pass by chance do not put the renewal off by a minute)
-///   gives the reference to the current field, and the hard-iron estimate
-///   starts over from zero. The estimate moves towards a reading
+///   gives the reference to the current field once the inclination is
+///   known (the reference's dip is measured through it), and the hard-iron
+///   estimate starts over from zero. The estimate moves towards a reading
 ///   by at most the fraction `1 - exp(-dt / tau_mag)` of the reference's
 ///   length, and stays within twice that length (a step beyond is not
 ///   taken); a usable reading that the estimate, taken off, would make
@@ -809,13 +810,16 @@ impl OrientationFilter {
         };
         if first {
             self.mag_reference = [seen.x, seen.y];
-        } else if !inside && self.mag_shut >= MAG_REFERENCE_TAU {
+        } else if !inside && self.mag_shut >= MAG_REFERENCE_TAU && known {
             // The gate has been shut for a net MAG_REFERENCE_TAU: a new
             // environment, or a burst of identical glitches that confirmed
             // itself as the first fields. The field becomes the reference,
             // and corrects the heading as any field that passes does; the
             // hard-iron estimate, part of the model that failed, starts
-            // over.
+            // over. Only while the inclination is known: the reference's
+            // dip is measured through it (one taken while the sensor's
+            // attitude is upside down has its vertical part reversed, and
+            // would be renewed again a minute later).
             if self.hard_iron != Cvec3::ZERO {
                 let raw = attitude * mag;
                 if let Some(horizontal) = horizontal_part(raw) {

@@ -773,6 +773,28 @@ fn the_hard_iron_estimate_does_not_learn_at_rest() {
     assert_eq!(f.hard_iron, Cvec3::ZERO);
 }
 
+/// The reference is renewed only while the inclination is known (its dip
+/// is measured through it): a new environment met while the
+/// accelerometer average is outside its gate (a sustained 1.5 g) fails
+/// the gate for all of 70 s, and is taken as the reference within seconds
+/// of the average's return.
+#[test]
+fn the_reference_is_renewed_only_while_the_inclination_is_known() {
+    let level = Cvec3::new(0.0, 0.0, G);
+    let mut f = settled_on_the_field();
+    for i in 0..7000 {
+        f.update_with_mag(Cvec3::ZERO, level * 1.5, FIELD * 2.0, 0.01);
+        let d = f.diagnostics();
+        assert!(d.mag_ignored && (i < 500 || d.acc_ignored), "{i}: {d:?}");
+    }
+    let renewed = (0..1500).find(|_| {
+        f.update_with_mag(Cvec3::ZERO, level, FIELD * 2.0, 0.01);
+        !f.diagnostics().mag_ignored
+    });
+    let seconds = renewed.map(|i| i as f32 * 0.01);
+    assert!(seconds.is_some_and(|s| s < 10.0), "{seconds:?}");
+}
+
 /// Fields that pass amid a shut gate take back their own time, no more:
 /// after 30 s of a disturbance (fields half again as strong and half as
 /// strong, in turn, which leave the reference where it was), 1 s of the
