@@ -186,6 +186,41 @@ mod tests {
         assert_eq!(steps_to_rest(heavy, &p), fresh + 1);
     }
 
+    /// Low-passes that still fit decay rather than restart: after a turn
+    /// at 5 or 300 rad/s, or an average left at 500 g (within the largest
+    /// specific force), rest is seen only once they have decayed, seconds
+    /// after a new detector would see it.
+    #[test]
+    fn low_passes_that_fit_decay() {
+        let p = FilterParams::DEFAULT;
+        let fresh = steps_to_rest(RestDetector::new(), &p);
+        // 300 rad/s is 0.95 of half a turn per sample.
+        for rate in [5.0, 300.0] {
+            let mut turned = RestDetector::new();
+            for _ in 0..200 {
+                turned.update(Cvec3::new(0.0, 0.0, rate), gravity(), DT, &p);
+            }
+            let after_turn = steps_to_rest(turned, &p);
+            assert!(
+                after_turn > fresh + 100,
+                "{rate}: {after_turn} against {fresh}"
+            );
+        }
+        let mut heavy = RestDetector::new();
+        let strong = FilterParams {
+            gravity: 500.0 * p.gravity,
+            ..p
+        };
+        heavy.update(
+            Cvec3::ZERO,
+            Cvec3::new(0.0, 0.0, strong.gravity),
+            DT,
+            &strong,
+        );
+        let after_heavy = steps_to_rest(heavy, &p);
+        assert!(after_heavy > fresh + 100, "{after_heavy} against {fresh}");
+    }
+
     #[test]
     fn a_jolt_restarts_the_clock() {
         let p = FilterParams::DEFAULT;
