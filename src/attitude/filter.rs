@@ -35,6 +35,11 @@ const IMPULSE_PEAK: f32 = 0.644_794;
 /// 4 kHz.
 pub(super) const MAX_SPECIFIC_FORCE: f32 = 1000.0;
 
+/// The square of half a turn, in rad^2: a gyro reading that turns further
+/// within one sample aliases (no sampled gyro tells it from a slower turn
+/// the other way).
+pub(super) const HALF_TURN_SQUARED: f32 = core::f32::consts::PI * core::f32::consts::PI;
+
 /// The fraction of `gyro_range` from which a reading counts as saturated.
 const SATURATION: f32 = 0.99;
 
@@ -563,8 +568,7 @@ impl OrientationFilter {
         if !(self.bias.norm_squared() <= max_bias * max_bias) {
             self.set_bias(self.bias);
         }
-        let half_turn = core::f32::consts::PI * core::f32::consts::PI;
-        let usable = |rate: Cvec3| ((rate - self.bias) * dt).norm_squared() <= half_turn;
+        let usable = |rate: Cvec3| ((rate - self.bias) * dt).norm_squared() <= HALF_TURN_SQUARED;
         let ignored = !usable(gyr);
         self.flags.set(Flags::GYRO_IGNORED, ignored);
         if ignored && !usable(self.last_rate) {

@@ -1,7 +1,7 @@
 //! The rest detector of the [`OrientationFilter`](super::OrientationFilter):
 //! while the sensor lies still, the gyro reads its bias.
 
-use super::filter::MAX_SPECIFIC_FORCE;
+use super::filter::{HALF_TURN_SQUARED, MAX_SPECIFIC_FORCE};
 use super::low_pass::{low_pass, smoothing_factor};
 use super::FilterParams;
 use crate::vec::Cvec3;
@@ -47,9 +47,8 @@ impl RestDetector {
         // which would take half a minute to decay below `max_bias` and
         // hide rest meanwhile): the low-passes start at this sample.
         // NaN fails the tests too.
-        let half_turn = core::f32::consts::PI * core::f32::consts::PI;
         #[allow(clippy::neg_cmp_op_on_partial_ord)]
-        if !(self.time >= 0.0 && (self.gyro * dt).norm_squared() <= half_turn) {
+        if !(self.time >= 0.0 && (self.gyro * dt).norm_squared() <= HALF_TURN_SQUARED) {
             *self = Self {
                 gyro: gyr,
                 acc,
@@ -61,7 +60,7 @@ impl RestDetector {
         let acc_lp = low_pass(self.acc, acc, alpha);
         // Beyond the largest specific force the filter takes (left by
         // parameters that were changed since: a low-pass of samples near
-        // a `gravity` of 1e36 would take a minute to forget them, and
+        // a `gravity` of 1e18 would take over 20 s to forget them, and
         // hide rest meanwhile), or overflowed: the low-passes restart at
         // this sample.
         let bound = MAX_SPECIFIC_FORCE * p.gravity;
