@@ -35,6 +35,17 @@ impl RestDetector {
         }
     }
 
+    /// A detector whose low-passes start at the sample `gyr`, `acc`, with
+    /// no stillness counted yet.
+    #[inline]
+    const fn started_at(gyr: Cvec3, acc: Cvec3) -> Self {
+        Self {
+            gyro: gyr,
+            acc,
+            time: 0.0,
+        }
+    }
+
     /// Takes one sample (gyro `gyr`, accelerometer `acc`, both finite, `acc`
     /// not zero, `dt` seconds after the previous one): still if the gyro is within
     /// `rest_gyro` of its low-pass, the low-pass is below `max_bias`, and
@@ -49,11 +60,7 @@ impl RestDetector {
         // NaN fails the tests too.
         #[allow(clippy::neg_cmp_op_on_partial_ord)]
         if !(self.time >= 0.0 && (self.gyro * dt).norm_squared() <= HALF_TURN_SQUARED) {
-            *self = Self {
-                gyro: gyr,
-                acc,
-                time: 0.0,
-            };
+            *self = Self::started_at(gyr, acc);
         }
         let alpha = smoothing_factor(dt, REST_LOW_PASS_TAU);
         let gyro = low_pass(self.gyro, gyr, alpha);
@@ -69,11 +76,7 @@ impl RestDetector {
         // infinity, the first test catches an overflowed low-pass.
         #[allow(clippy::neg_cmp_op_on_partial_ord)]
         if !(length_squared <= f32::MAX && length_squared <= bound * bound) {
-            *self = Self {
-                gyro: gyr,
-                acc,
-                time: 0.0,
-            };
+            *self = Self::started_at(gyr, acc);
             return;
         }
         let still = (gyr - gyro).norm() <= p.rest_gyro
