@@ -60,7 +60,7 @@ fn is_unit(q: Quat) -> bool {
 }
 
 fn set_param(p: &mut FilterParams, which: u8, value: f32) {
-    let field = match which % 14 {
+    let field = match which % 15 {
         0 => &mut p.gravity,
         1 => &mut p.tau_acc,
         2 => &mut p.tau_mag,
@@ -74,7 +74,8 @@ fn set_param(p: &mut FilterParams, which: u8, value: f32) {
         10 => &mut p.rest_time,
         11 => &mut p.acc_gate,
         12 => &mut p.mag_gate,
-        _ => &mut p.gyro_range,
+        13 => &mut p.gyro_range,
+        _ => &mut p.mag_delay,
     };
     *field = value;
 }

@@ -29,7 +29,7 @@ pub struct Diagnostics {
     pub acc_error: f32,
     /// The heading error the magnetometer saw in the last update, in
     /// radians (east of magnetic north is positive; 0 when ignored or in
-    /// 6D).
+    /// 6D), to 16 significant bits (a relative error of at most 2^-16).
     pub mag_error: f32,
     /// Start-up: since the first usable accelerometer sample, less than
     /// `tau_acc` seconds have passed, and the corrections use the time
@@ -62,55 +62,69 @@ pub struct Diagnostics {
 }
 
 /// The flags of [`Diagnostics`] and the filter's own "inclination set"
-/// flag, one bit each, so that the filter's state holds them in one byte.
+/// flag, one bit each in the low byte; the top 24 bits hold
+/// [`Diagnostics::mag_error`] as the top 24 bits of its `f32` (rounded:
+/// 16 significant bits, a relative error of at most 2^-16), so that the
+/// filter's state holds both in one word.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub(super) struct Flags(u8);
+pub(super) struct Flags(u32);
 
 impl Flags {
     /// [`Diagnostics::initialising`].
-    pub(super) const INITIALISING: u8 = 1;
+    pub(super) const INITIALISING: u32 = 1;
     /// [`Diagnostics::recovering`].
-    pub(super) const RECOVERING: u8 = 1 << 1;
+    pub(super) const RECOVERING: u32 = 1 << 1;
     /// [`Diagnostics::gyro_saturated`].
-    pub(super) const GYRO_SATURATED: u8 = 1 << 2;
+    pub(super) const GYRO_SATURATED: u32 = 1 << 2;
     /// [`Diagnostics::gyro_ignored`].
-    pub(super) const GYRO_IGNORED: u8 = 1 << 3;
+    pub(super) const GYRO_IGNORED: u32 = 1 << 3;
     /// [`Diagnostics::resting`].
-    pub(super) const RESTING: u8 = 1 << 4;
+    pub(super) const RESTING: u32 = 1 << 4;
     /// [`Diagnostics::acc_ignored`].
-    pub(super) const ACC_IGNORED: u8 = 1 << 5;
+    pub(super) const ACC_IGNORED: u32 = 1 << 5;
     /// [`Diagnostics::mag_ignored`].
-    pub(super) const MAG_IGNORED: u8 = 1 << 6;
+    pub(super) const MAG_IGNORED: u32 = 1 << 6;
     /// The filter's inclination has been set (from an accelerometer
     /// sample, or a starting attitude); not a diagnostic.
-    pub(super) const INITIALIZED: u8 = 1 << 7;
+    pub(super) const INITIALIZED: u32 = 1 << 7;
+    /// The bits of the flags; the others hold the heading error.
+    const BITS: u32 = 0xff;
 
-    /// The flags in `bits` set, the others clear.
+    /// The flags in `bits` set, the others clear, and no heading error.
     #[inline]
-    pub(super) const fn new(bits: u8) -> Self {
-        Self(bits)
+    pub(super) const fn new(bits: u32) -> Self {
+        Self(bits & Self::BITS)
     }
 
     /// Whether the flag `bit` (one of the constants) is set.
     #[inline]
-    pub(super) const fn get(self, bit: u8) -> bool {
+    pub(super) const fn get(self, bit: u32) -> bool {
         self.0 & bit != 0
     }
 
     /// Sets the flag `bit` (one of the constants) to `on`.
     #[inline]
-    pub(super) fn set(&mut self, bit: u8, on: bool) {
-        self.0 = (self.0 & !bit) | (bit & u8::from(on).wrapping_neg());
+    pub(super) fn set(&mut self, bit: u32, on: bool) {
+        self.0 = (self.0 & !bit) | (bit & u32::from(on).wrapping_neg());
     }
 
-    /// The flags as [`Diagnostics`], with the two errors.
+    /// Keeps `error` as [`Diagnostics::mag_error`], rounded to its top 24
+    /// bits. `error` is finite (a heading error, or 0), so that rounding
+    /// cannot reach the bit patterns of infinity or NaN.
     #[inline]
-    pub(super) const fn diagnostics(self, acc_error: f32, mag_error: f32) -> Diagnostics {
+    pub(super) fn set_mag_error(&mut self, error: f32) {
+        let rounded = error.to_bits().wrapping_add(Self::BITS.div_ceil(2));
+        self.0 = (rounded & !Self::BITS) | (self.0 & Self::BITS);
+    }
+
+    /// The flags as [`Diagnostics`], with the inclination error.
+    #[inline]
+    pub(super) const fn diagnostics(self, acc_error: f32) -> Diagnostics {
         Diagnostics {
             acc_error,
-            mag_error,
+            mag_error: f32::from_bits(self.0 & !Self::BITS),
             initialising: self.get(Self::INITIALISING),
             recovering: self.get(Self::RECOVERING),
             gyro_saturated: self.get(Self::GYRO_SATURATED),
@@ -119,5 +133,34 @@ impl Flags {
             acc_ignored: self.get(Self::ACC_IGNORED),
             mag_ignored: self.get(Self::MAG_IGNORED),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_heading_error_is_kept_to_sixteen_bits_beside_the_flags() {
+        let flags = Flags::RESTING | Flags::INITIALIZED | Flags::MAG_IGNORED;
+        for error in [0.0, 1e-30, -0.05, 0.1, -1.0, core::f32::consts::PI] {
+            let mut f = Flags::new(flags);
+            f.set_mag_error(error);
+            let kept = f.diagnostics(0.0).mag_error;
+            assert!(
+                (kept - error).abs() <= error.abs() * 2f32.powi(-16),
+                "{error} kept as {kept}"
+            );
+            // The flags are untouched, and setting them leaves the error.
+            assert_eq!(f.0 & Flags::BITS, flags);
+            f.set(Flags::RESTING, false);
+            f.set(Flags::ACC_IGNORED, true);
+            assert_eq!(f.diagnostics(0.0).mag_error, kept);
+            assert!(!f.get(Flags::RESTING) && f.get(Flags::ACC_IGNORED));
+        }
+        // Rounded, not cut: just below 1, the error is kept as 1.
+        let mut f = Flags::new(0);
+        f.set_mag_error(1.0 - f32::EPSILON);
+        assert_eq!(f.diagnostics(0.0).mag_error, 1.0);
     }
 }

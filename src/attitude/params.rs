@@ -131,6 +131,22 @@ pub struct FilterParams {
     /// a 350 °/s gyro, 1,011 samples at the range: 6D inclination RMSE
     /// 50° with the range set, 3.5° without).
     pub gyro_range: f32,
+    /// How long the magnetometer's readings lag the gyroscope's, in
+    /// seconds (default 0: none). A magnetometer that samples slower than
+    /// the gyro, holds its last value or averages internally reads the
+    /// field of a moment ago; while the sensor turns, that field is turned
+    /// against today's by the turn since, which tilts the field's dip and
+    /// turns its heading by `rate * mag_delay` (0.6° at 1 rad/s with a
+    /// delay of 11 ms). The filter brings each reading forward by the turn
+    /// the gyro measured over the delay (to first order, and by at most a
+    /// quarter of a radian). Negative if the gyro lags the magnetometer (a
+    /// gyro low-pass). To measure it without a reference, turn the sensor
+    /// by hand and find the shift `s` that best fits
+    /// `d mag / dt = -(gyr(t - s) - bias) x mag(t)` over the recording;
+    /// the README's IMU section gives BROAD's sensor's (11 ms) and what it
+    /// changes there.
+    #[cfg_attr(feature = "serde", serde(default))]
+    pub mag_delay: f32,
 }
 
 impl FilterParams {
@@ -157,6 +173,7 @@ impl FilterParams {
         acc_gate: 0.1,
         mag_gate: 0.1,
         gyro_range: f32::MAX,
+        mag_delay: 0.0,
     };
 }
 
@@ -178,6 +195,7 @@ impl FilterParams {
             self.acc_gate,
             self.mag_gate,
             self.gyro_range,
+            self.mag_delay,
         ]
         .iter()
         .any(|p| p.is_nan())
