@@ -52,6 +52,19 @@ struct Args {
     /// `RIGTFORM_FUSION_SCRIPT`).
     #[arg(long)]
     fusion_script: Option<PathBuf>,
+    /// `FilterParams::mag_delay` for every BROAD trial, in seconds: how
+    /// long the magnetometer lags the gyroscope (default 0, as
+    /// `FilterParams::DEFAULT`; BROAD's sensor: 0.011).
+    #[arg(long, default_value_t = 0.0, value_parser = finite_seconds)]
+    mag_delay: f32,
+}
+
+/// A delay in seconds: a finite number.
+fn finite_seconds(text: &str) -> Result<f32, String> {
+    match text.parse::<f32>() {
+        Ok(seconds) if seconds.is_finite() => Ok(seconds),
+        _ => Err(format!("`{text}` is not a finite number of seconds")),
+    }
 }
 
 /// Published RMSEs in degrees on a BROAD trial: Madgwick and Mahony with
@@ -128,7 +141,10 @@ fn evaluate(args: &Args) -> Result<(), String> {
             Recording::Fusion(samples) => fusion.push((name, samples)),
         }
     }
-    let params = FilterParams::DEFAULT;
+    let params = FilterParams {
+        mag_delay: args.mag_delay,
+        ..FilterParams::DEFAULT
+    };
     let scripts = if trials.is_empty() {
         None
     } else {
@@ -179,8 +195,8 @@ fn evaluate(args: &Args) -> Result<(), String> {
         })
         .collect::<Result<_, String>>()?;
     if !trials.is_empty() {
-        print_table(&trials);
-        print_peers(&trials);
+        print_table(&trials, params.mag_delay);
+        print_peers(&trials, params.mag_delay);
     }
     for (name, samples) in &fusion {
         print_fusion_summary(name, samples);
@@ -209,8 +225,12 @@ fn trial_number(name: &str) -> Option<&str> {
         .filter(|n| n.bytes().all(|b| b.is_ascii_digit()))
 }
 
-fn print_table(trials: &[Trial]) {
-    println!("BROAD trials: RMSE in degrees over the movement phase, FilterParams::DEFAULT for every trial.");
+fn print_table(trials: &[Trial], mag_delay: f32) {
+    if mag_delay == 0.0 {
+        println!("BROAD trials: RMSE in degrees over the movement phase, FilterParams::DEFAULT for every trial.");
+    } else {
+        println!("BROAD trials: RMSE in degrees over the movement phase, FilterParams::DEFAULT with mag_delay {mag_delay} s for every trial.");
+    }
     println!("VQF: the `vqf` package from PyPI (VQF(Ts).updateBatch, default parameters), run on the same CSVs in this run.");
     println!("Madgwick and Mahony: the BROAD authors' 9D runs with the one parameter set best over all 39 trials (TAGP).\n");
     println!("| trial | ours 6D incl. | VQF 6D incl. | ours 9D incl. | VQF 9D incl. | ours 9D heading | VQF 9D heading | ours 9D total | VQF 9D total | Madgwick incl. / total | Mahony incl. / total |");
@@ -296,9 +316,8 @@ fn print_table(trials: &[Trial]) {
     }
 }
 
-/// How each filter of [`print_peers`] runs.
+/// How the filters of [`print_peers`] other than ours run.
 const SETTINGS: &str = "\
-- ours: OrientationFilter::new(FilterParams::DEFAULT), dt 3.5 ms.
 - VQF (PyPI): `vqf` VQF(0.0035).updateBatch, default parameters (tools/vqf_broad.py).
 - uf-ahrs 0.2.2: Vqf / Mahony / Madgwick ::new(3.5 ms, *Params::default()) (Mahony kp 0.74, ki 0.0012; \
 Madgwick beta 0.05), Ahrs::update (9D) and update_imu (6D); its north-west-up estimates turned to east-north-up.
@@ -319,8 +338,16 @@ fn cell(run: &Run, rmse: f64) -> String {
 
 /// Every filter's 6D inclination and 9D total error, trial by trial, and
 /// their means over the trials.
-fn print_peers(trials: &[Trial]) {
+fn print_peers(trials: &[Trial], mag_delay: f32) {
     println!("\nAll filters on the same samples, the same metric (RMSE in degrees over the movement phase):");
+    if mag_delay == 0.0 {
+        println!("- ours: OrientationFilter::new(FilterParams::DEFAULT), dt 3.5 ms.");
+    } else {
+        println!(
+            "- ours: OrientationFilter::new(FilterParams::DEFAULT with mag_delay {mag_delay} s), dt 3.5 ms \
+             (the other filters get the magnetometer readings as recorded)."
+        );
+    }
     println!("{SETTINGS}");
     let names: Vec<&str> = ["ours", pypi::VQF.name]
         .into_iter()
