@@ -138,12 +138,13 @@ pub struct FilterParams {
     /// against today's by the turn since, which tilts the field's dip and
     /// turns its heading by `rate * mag_delay` (0.6° at 1 rad/s with a
     /// delay of 11 ms). The filter brings each reading forward by the turn
-    /// the gyro measured over the delay (to first order, and by at most a
-    /// quarter of a radian). Negative if the gyro lags the magnetometer (a
-    /// gyro low-pass). To measure it without a reference, turn the sensor
-    /// by hand and find the shift `s` that best fits
-    /// `d mag / dt = -(gyr(t - s) - bias) x mag(t)` over the recording;
-    /// the README's IMU section gives BROAD's sensor's (11 ms) and what it
+    /// the gyro measured over the delay (to first order, each part of the
+    /// turn at most a quarter of a radian). Negative if the gyro lags the
+    /// magnetometer (a gyro low-pass). To measure it without a reference,
+    /// turn the sensor by hand and find the shift `s` that best fits
+    /// `d mag / dt = -(gyr(t - s) - bias) x mag(t)` over the recording
+    /// (the repository's `tools/mag_delay.py` does, for BROAD's CSVs);
+    /// `docs/attitude.md` gives BROAD's sensor's (11 ms) and what it
     /// changes there.
     #[cfg_attr(feature = "serde", serde(default))]
     pub mag_delay: f32,
