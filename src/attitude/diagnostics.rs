@@ -29,7 +29,9 @@ pub struct Diagnostics {
     pub acc_error: f32,
     /// The heading error the magnetometer saw in the last update, in
     /// radians (east of magnetic north is positive; 0 when ignored or in
-    /// 6D), to 16 significant bits (a relative error of at most 2^-16).
+    /// 6D), to 16 significant bits: a relative error of at most 2^-16
+    /// (below 1.2e-38 rad, where `f32` has fewer bits, an absolute error of
+    /// at most 2^-142 rad).
     pub mag_error: f32,
     /// Start-up: since the first usable accelerometer sample, less than
     /// `tau_acc` seconds have passed, and the corrections use the time
@@ -64,8 +66,9 @@ pub struct Diagnostics {
 /// The flags of [`Diagnostics`] and the filter's own "inclination set"
 /// flag, one bit each in the low byte; the top 24 bits hold
 /// [`Diagnostics::mag_error`] as the top 24 bits of its `f32` (rounded:
-/// 16 significant bits, a relative error of at most 2^-16), so that the
-/// filter's state holds both in one word.
+/// 16 significant bits, a relative error of at most 2^-16; for subnormal
+/// errors an absolute one of at most 2^-142), so that the filter's state
+/// holds both in one word.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -157,6 +160,18 @@ mod tests {
             f.set(Flags::ACC_IGNORED, true);
             assert_eq!(f.diagnostics(0.0).mag_error, kept);
             assert!(!f.get(Flags::RESTING) && f.get(Flags::ACC_IGNORED));
+        }
+        // Subnormal errors: within half of 2^-141, the lowest kept bit
+        // (2^-142 is the subnormal with bit 7 set).
+        let half_lowest = f32::from_bits(1 << 7);
+        for error in [1e-40f32, -3e-42, f32::from_bits(0x7f)] {
+            let mut f = Flags::new(0);
+            f.set_mag_error(error);
+            let kept = f.diagnostics(0.0).mag_error;
+            assert!(
+                (kept - error).abs() <= half_lowest,
+                "{error} kept as {kept}"
+            );
         }
         // Rounded, not cut: just below 1, the error is kept as 1.
         let mut f = Flags::new(0);
