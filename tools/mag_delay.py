@@ -17,7 +17,8 @@ fixed to the sensor does not turn.
 Usage: python3 tools/mag_delay.py [--dt SECONDS] TRIAL.csv[.gz] ...
 (BROAD trial CSVs, as the `broad` binary reads them; `--dt` defaults to
 BROAD's 3.5 ms). Needs numpy. Prints one line per trial; exits non-zero,
-naming the file, if a trial turns too little or the best shift lies at the
+naming the file, if a trial has a gyro or magnetometer reading that is not
+finite (and which sample), turns too little, or has its best shift at the
 end of the searched range.
 """
 
@@ -61,7 +62,10 @@ def delay_samples(gyr, mag):
             f"({SHIFTS.start} to {SHIFTS.stop - 1} samples)"
         )
     a, b, c = residuals[best - 1:best + 2]
-    return SHIFTS.start + best + 0.5 * (a - c) / (a - 2 * b + c)
+    curvature = a - 2 * b + c
+    # A flat minimum (equal neighbours) has no better estimate than itself.
+    refinement = 0.5 * (a - c) / curvature if curvature > 0 else 0.0
+    return SHIFTS.start + best + refinement
 
 
 def main():
@@ -78,6 +82,12 @@ def main():
         except (OSError, ValueError) as e:
             sys.exit(f"error: {e}")
         gyr, mag = d[:, 0:3], d[:, 6:9]
+        bad = ~np.isfinite(np.hstack([gyr, mag])).all(axis=1)
+        if bad.any():
+            sys.exit(
+                f"error: {path}: sample {int(np.argmax(bad)) + 1} has a gyro or "
+                f"magnetometer reading that is not a finite number"
+            )
         mean_rate = np.mean(np.linalg.norm(gyr, axis=1))
         if len(d) < 200 or mean_rate < LEAST_RATE:
             sys.exit(
