@@ -237,13 +237,12 @@ pub mod kani_kernels {
     pub use crate::quat::kernels_f64::{slerp_arc, slerp_coefficients, slerp_sinc};
 }
 
-/// The conditions of the contracts on the core operations
-/// (`src/features/impl_kani.rs`), under Kani and with the
-/// `kernel-contracts` feature, for `rigtform-proofs`' check of them. Not
-/// part of the API.
+/// The conditions of the contracts on the core operations, under Kani and
+/// with the `kernel-contracts` feature, for `rigtform-proofs`' check of
+/// them. Not part of the API.
 #[cfg(kernels_exported)]
 #[doc(hidden)]
-pub use features::impl_kani as kani_contracts;
+pub mod kani_contracts;
 
 pub use matrix::{Matrix4, NotRigid};
 pub use matrix3::Matrix3;

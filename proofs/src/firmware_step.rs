@@ -2,7 +2,7 @@
 //! an attitude estimate ([`firmware_step`]), and a harness that proves it
 //! never gives a non-finite attitude, with the library's `normalize` and
 //! `slerp` replaced by their contracts (`#[kani::stub_verified]`), which
-//! the library's own harnesses check (`src/features/impl_kani.rs` of
+//! the library's own harnesses check (`src/kani_contracts.rs` of
 //! `rigtform`). `docs/kani.md` is the guide.
 //!
 //! The harness is written for

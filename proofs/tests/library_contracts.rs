@@ -1,6 +1,6 @@
 //! The contracts on the library's core operations (`kani::requires` and
 //! `kani::ensures` under `cfg(kani)`, their conditions in the library's
-//! `src/features/impl_kani.rs`, shown here as `rigtform::kani_contracts`
+//! `src/kani_contracts.rs`, shown here as `rigtform::kani_contracts`
 //! by the `kernel-contracts` feature of this crate's dev-dependency),
 //! checked on edge and random inputs: wherever an operation's `requires`
 //! holds, its `ensures` holds of the result. Kani checks the same on every

@@ -6,8 +6,6 @@ mod impl_approx;
 mod impl_bytemuck;
 #[cfg(feature = "glam")]
 mod impl_glam;
-#[cfg(kernels_exported)]
-pub mod impl_kani;
 #[cfg(feature = "mint")]
 mod impl_mint;
 #[cfg(feature = "nalgebra")]

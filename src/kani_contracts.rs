@@ -15,7 +15,7 @@
 //! f32 components (their squares are exact there) without a square root,
 //! and makes no NaN from numbers, which Kani would report.
 //!
-//! Not part of the API (hidden, as `rigtform::kani_contracts`): the
+//! Not part of the API (hidden): the
 //! contracts change with the proofs.
 
 use crate::{Cvec3, Quat, RigTForm};
