@@ -438,7 +438,7 @@ pub const MATRIX3_DETERMINANT_MAX_REL_ERROR: f32 = 2.5e-7; // 2.002e-7
 pub const MATRIX_ENTRY_ERROR: f32 = 3.8e-7; // 3.000e-7
 /// Angle error, in radians, of
 /// [`Cvec3::angle_between`](crate::Cvec3::angle_between) against the exact
-/// angle between the same f32 vectors (nalgebra in f64, `src/vec.rs`'s
+/// angle between the same f32 vectors (nalgebra in f64, `src/vec/tests.rs`'s
 /// tests): random pairs, and pairs 1e-7 to 1e-1 rad from parallel and
 /// from opposite, at scales 2^-40 to 2^40.
 ///

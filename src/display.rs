@@ -5,8 +5,8 @@
 
 use core::fmt::{self, Display, Formatter};
 
+use crate::matrix::Matrix3;
 use crate::matrix::Matrix4;
-use crate::matrix3::Matrix3;
 use crate::quat::{EulerRot, Quat};
 use crate::rigtform::RigTForm;
 use crate::vec::{Cvec3, Cvec4};

@@ -190,7 +190,7 @@
 // `vsqrt.f32` (`fpu_sqrt`) on Arm hard-float targets, `sqrtss` and `fsqrt`
 // (`vector_unit_sqrt`) on x86-64 with SSE and AArch64 with NEON; and on
 // x86-64 with SSE the quaternion product in SSE registers
-// (`product::by_lanes` in src/quat/product.rs), slerp's pair and weighted
+// (`by_lanes` in src/quat/ops.rs), slerp's pair and weighted
 // sum (src/quat/slerp/in_f64/sse2.rs) and the slice APIs' vector
 // lanes (the `Isa` implementations of src/quat/slerp/slice/sse2.rs and,
 // with AVX, avx.rs: one intrinsic per operation; and `lerp_all_components`
@@ -210,7 +210,6 @@ mod display;
 mod features;
 mod float;
 mod matrix;
-mod matrix3;
 mod quat;
 mod rigtform;
 #[cfg(test)]
@@ -244,8 +243,7 @@ pub mod kani_kernels {
 #[doc(hidden)]
 pub mod kani_contracts;
 
-pub use matrix::{Matrix4, NotRigid};
-pub use matrix3::Matrix3;
+pub use matrix::{Matrix3, Matrix4, NotRigid};
 pub use quat::{EulerRot, Quat};
 pub use rigtform::RigTForm;
 pub use vec::{Cvec3, Cvec4};

@@ -1,24 +1,29 @@
 //! [`Quat`]: rotation quaternions, as in the notes' sections "the
-//! representation" and "Operations": the type, its products and rotation
-//! of vectors; `quat/basics.rs` holds its own methods (construction,
-//! components, norms, the inverse, conditional negation `cn` and the
-//! axis-angle form).
+//! representation" and "Operations". This file holds the type and what
+//! defines it as a rotation: the dot product and norms, the inverse `inv`,
+//! the conditional negation `cn` and the angle between two rotations; the
+//! rest is one file a role or a concept, declared below in the order the
+//! documentation lists their methods:
 //!
-//! One file per further concept: `quat/power.rs` (the notes' "Power": the
-//! polar form and `pow`), `quat/interpolate.rs` ("to interpolate": `slerp`,
-//! `nlerp`, `blend`), `quat/exp_log.rs` (the exponential and logarithm
-//! maps, and gyro integration built on them), `quat/euler.rs` (Euler
-//! angles), `quat/from_basis.rs` (the rotation of an orthonormal basis, which
-//! `Quat::from_matrix` in `matrix/quat_conversions.rs` takes from a matrix),
-//! `quat/rotation_arc.rs` (the shortest rotation between two directions),
-//! `quat/catmull_rom.rs` (splines through many keyframes),
-//! `quat/arithmetic.rs` (sums and scaling, as a 4-vector),
-//! `quat/towards.rs` (`slerp_long`, `rotate_towards`) and
-//! `quat/other_names.rs` (glam's and nalgebra's names for these methods).
+//! - `quat/construction.rs` (from components, axis and angle, a coordinate
+//!   axis) and `quat/conversion.rs` (arrays, tuples, `Cvec4`, axis-angle);
+//! - `quat/ops.rs`, the core products: the Hamilton product `a * b` and the
+//!   rotation of a vector `q * v`;
+//! - `quat/power.rs` (the notes' "Power": the polar form and `pow`),
+//!   `quat/interpolate.rs` (`nlerp`, `blend`), `quat/slerp.rs` (the notes'
+//!   "to interpolate"), `quat/towards.rs` (`slerp_long`,
+//!   `rotate_towards`), `quat/exp_log.rs` (the exponential and logarithm
+//!   maps, and gyro integration), `quat/euler.rs` (Euler angles),
+//!   `quat/from_basis.rs` (the rotation of an orthonormal basis, which
+//!   `Quat::from_matrix` in `matrix/quat_conversions.rs` takes from a
+//!   matrix), `quat/rotation_arc.rs` (the shortest rotation between two
+//!   directions), `quat/catmull_rom.rs` (splines through many keyframes);
+//! - `quat/other_names.rs`: glam's and nalgebra's names for these methods.
+//!
+//! As a 4-vector (sums, scaling, norms), a `Quat` shares the code of the
+//! vector types (`vec/template.rs`).
 
-use core::ops::{Mul, MulAssign, Neg};
-
-use crate::vec::{Cvec3, Cvec4};
+use crate::vec::euclidean;
 
 #[cfg(all(kernels_exported, desktop64))]
 pub(crate) use slerp::kernels_f64;
@@ -37,7 +42,7 @@ pub use euler::EulerRot;
 ///
 /// Start with [`from_axis_angle`](Self::from_axis_angle) or
 /// [`from_rotation_x`](Self::from_rotation_x) (and `_y`, `_z`); compose with
-/// `*`; rotate a [`Cvec3`] with `q * v`; interpolate with
+/// `*`; rotate a [`Cvec3`](crate::Cvec3) with `q * v`; interpolate with
 /// [`slerp`](Self::slerp). Components come in and out by name:
 /// [`from_xyzw`](Self::from_xyzw) (glam's order) and
 /// [`from_wxyz`](Self::from_wxyz) (the notes' and nalgebra's
@@ -83,191 +88,184 @@ impl Default for Quat {
     }
 }
 
-impl Mul<Quat> for Quat {
-    type Output = Quat;
-
-    /// The Hamilton product of the notes' "Operations":
-    /// `[w1 w2 - c1.c2, w1 c2 + w2 c1 + c1 x c2]`. As rotations, `a * b`
-    /// applies `b` first, then `a`. On x86-64 the four components are
-    /// summed at once in SSE registers, with the same bits as the formula.
-    ///
-    /// Accuracy: for unit inputs the product is within
-    /// [`accuracy::MUL_MAX_ANGLE_ERROR`](crate::accuracy::MUL_MAX_ANGLE_ERROR)
-    /// radians of the exact rotation and within
-    /// [`accuracy::UNIT_NORM_ERROR`](crate::accuracy::UNIT_NORM_ERROR) of unit norm.
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Quat};
-    /// let (a, b) = (Quat::from_rotation_x(0.5), Quat::from_rotation_y(0.5));
-    /// let v = Cvec3::new(1.0, 2.0, 3.0);
-    /// assert!(((a * b) * v - a * (b * v)).norm() < 1e-5);
-    /// ```
-    #[inline]
-    fn mul(self, o: Quat) -> Quat {
-        // Through the inherent method, which carries the Kani contract.
-        self.mul_quat(o)
-    }
-}
-
-impl MulAssign<Quat> for Quat {
-    /// `*self = *self * other`: `other` applied first, then `self`.
+impl Quat {
+    /// Dot product of the four components, `cos(angle/2)` of the rotation
+    /// from `self` to `other` up to sign, for unit quaternions.
     ///
     /// ```
     /// use rigtform::Quat;
-    /// let mut q = Quat::from_rotation_x(0.5);
-    /// q *= Quat::from_rotation_y(0.5);
-    /// assert_eq!(q, Quat::from_rotation_x(0.5) * Quat::from_rotation_y(0.5));
+    /// assert_eq!(Quat::IDENTITY.dot(-Quat::IDENTITY), -1.0);
     /// ```
     #[inline]
-    fn mul_assign(&mut self, other: Quat) {
-        *self = *self * other;
+    #[must_use]
+    pub fn dot(self, other: Self) -> f32 {
+        self.w * other.w + self.x * other.x + self.y * other.y + self.z * other.z
     }
-}
 
-impl From<[f32; 4]> for Quat {
-    /// Same as [`Quat::from_array`]: `[x, y, z, w]`, scalar last.
-    #[inline]
-    fn from(a: [f32; 4]) -> Self {
-        Self::from_array(a)
-    }
-}
-
-impl From<Quat> for [f32; 4] {
-    /// Same as [`Quat::to_array`]: `[x, y, z, w]`, scalar last.
-    #[inline]
-    fn from(q: Quat) -> Self {
-        q.to_array()
-    }
-}
-
-impl From<Cvec4> for Quat {
-    /// `x, y, z, w` as they are, glam's `Quat::from_vec4`.
+    /// The inverse of a unit quaternion, its conjugate `[w, -x, -y, -z]`
+    /// (the notes' "unit quat multiplicative inverse").
     ///
-    /// ```
-    /// use rigtform::{Cvec4, Quat};
-    /// assert_eq!(Quat::from(Cvec4::new(0.0, 0.0, 0.0, 1.0)), Quat::IDENTITY);
-    /// ```
-    #[inline]
-    fn from(v: Cvec4) -> Self {
-        Self::from_xyzw(v.x, v.y, v.z, v.w)
-    }
-}
-
-impl From<Quat> for Cvec4 {
-    /// `x, y, z, w` as they are, glam's `Vec4::from(Quat)`.
+    /// # Preconditions
     ///
-    /// ```
-    /// use rigtform::{Cvec4, Quat};
-    /// assert_eq!(Cvec4::from(Quat::IDENTITY), Cvec4::new(0.0, 0.0, 0.0, 1.0));
-    /// ```
-    #[inline]
-    fn from(q: Quat) -> Self {
-        Cvec4::new(q.x, q.y, q.z, q.w)
-    }
-}
-
-impl From<(f32, f32, f32, f32)> for Quat {
-    /// `(x, y, z, w)`, scalar last, as [`Quat::from_xyzw`].
+    /// `self` is a unit quaternion. For any other, this is still the
+    /// conjugate, which is the inverse times `|self|^2`. Exact (sign flips
+    /// only): `q.inv().inv() == q` bit for bit.
     ///
     /// ```
     /// use rigtform::Quat;
-    /// assert_eq!(Quat::from((0.0, 0.0, 0.0, 1.0)), Quat::IDENTITY);
+    /// let q = Quat::from_rotation_y(0.7);
+    /// assert!((q * q.inv()).angle_to(Quat::IDENTITY) < 1e-6);
+    /// assert_eq!(q.inv().inv(), q);
     /// ```
+    #[cfg_attr(kani, kani::ensures(|r: &Quat| crate::kani_contracts::is_conjugate(self, *r)))]
     #[inline]
-    fn from((x, y, z, w): (f32, f32, f32, f32)) -> Self {
-        Self::from_xyzw(x, y, z, w)
+    #[must_use]
+    pub fn inv(self) -> Self {
+        Self::from_wxyz(self.w, -self.x, -self.y, -self.z)
     }
-}
 
-impl From<Quat> for (f32, f32, f32, f32) {
-    /// `(x, y, z, w)`, scalar last, as [`Quat::to_array`].
+    /// Conditional negation, the notes' `cn`: `-self` if `w < 0`, otherwise
+    /// `self`. The same rotation, written with `w >= 0`, so that its angle is
+    /// at most pi (the short way). Exact.
     ///
     /// ```
     /// use rigtform::Quat;
-    /// let (x, y, z, w) = Quat::IDENTITY.into();
-    /// assert_eq!((x, y, z, w), (0.0, 0.0, 0.0, 1.0));
+    /// assert_eq!(Quat::from_wxyz(-0.6, 0.8, 0.0, 0.0).cn(), Quat::from_wxyz(0.6, -0.8, 0.0, 0.0));
+    /// assert_eq!(Quat::from_wxyz(0.6, 0.8, 0.0, 0.0).cn(), Quat::from_wxyz(0.6, 0.8, 0.0, 0.0));
     /// ```
+    #[doc(alias = "conditional_negate")]
     #[inline]
-    fn from(q: Quat) -> Self {
-        (q.x, q.y, q.z, q.w)
+    #[must_use]
+    pub fn cn(self) -> Self {
+        if self.w < 0.0 {
+            -self
+        } else {
+            self
+        }
     }
-}
 
-impl Mul<Cvec3> for Quat {
-    type Output = Cvec3;
-
-    /// Rotates `v`: the vector part of the notes' triple product
-    /// `q [0, v] q^-1`, evaluated as `v + w t + u x t` with `u` the vector
-    /// part of `q` and `t = 2 u x v` (the same value for a unit `q`, in 18
-    /// multiplications instead of the triple product's 32).
-    ///
-    /// Preconditions: `self` is a unit quaternion (for another, the result
-    /// is not a rotation). Accuracy: error at most
-    /// [`accuracy::ROTATE_MAX_REL_ERROR`](crate::accuracy::ROTATE_MAX_REL_ERROR)
-    /// times `|v|`.
-    ///
-    /// ```
-    /// use core::f32::consts::PI;
-    /// use rigtform::{Cvec3, Quat};
-    /// let v = Quat::from_rotation_y(PI) * Cvec3::new(1.0, 2.0, 3.0);
-    /// assert!((v - Cvec3::new(-1.0, 2.0, -3.0)).norm() < 1e-6);
-    /// ```
-    #[inline]
-    fn mul(self, v: Cvec3) -> Cvec3 {
-        // Through the inherent method, which carries the Kani contract.
-        self.mul_vec3(v)
-    }
-}
-
-/// `q * v`, the formula of `Mul<Cvec3> for Quat` (its doc).
-#[inline]
-fn rotate(q: Quat, v: Cvec3) -> Cvec3 {
-    let u = q.vector();
-    let t = u.cross(v) * 2.0;
-    v + t * q.w + u.cross(t)
-}
-
-impl Mul<Cvec4> for Quat {
-    type Output = Cvec4;
-
-    /// Rotates the first three coordinates and copies the fourth, as the
-    /// notes' `quat * cvec4` ("copy over the 0/1 fourth coordinate").
-    ///
-    /// ```
-    /// use core::f32::consts::FRAC_PI_2;
-    /// use rigtform::{Cvec4, Quat};
-    /// let c = Quat::from_rotation_z(FRAC_PI_2) * Cvec4::new(1.0, 0.0, 0.0, 1.0);
-    /// assert!((c - Cvec4::new(0.0, 1.0, 0.0, 1.0)).norm() < 1e-6);
-    /// assert_eq!(c.w, 1.0);
-    /// ```
-    #[inline]
-    fn mul(self, c: Cvec4) -> Cvec4 {
-        let r = self * c.xyz();
-        Cvec4::new(r.x, r.y, r.z, c.w)
-    }
-}
-
-impl Neg for Quat {
-    type Output = Quat;
-
-    /// The antipode `-q`: the same rotation.
+    /// `true` if the norm is within
+    /// [`accuracy::IS_NORMALIZED_TOLERANCE`](crate::accuracy::IS_NORMALIZED_TOLERANCE)
+    /// of 1: the quaternion can be handed to the methods that expect a
+    /// unit one. `false` for NaN or infinite components.
     ///
     /// ```
     /// use rigtform::Quat;
-    /// let q = Quat::from_rotation_x(0.4);
-    /// assert_eq!((-q).angle_to(q), 0.0);
+    /// assert!(Quat::from_rotation_x(0.3).is_normalized());
+    /// assert!(!Quat::from_wxyz(2.0, 0.0, 0.0, 0.0).is_normalized());
+    /// assert!(!Quat::NAN.is_normalized());
+    /// ```
+    #[doc(alias = "is_unit")]
+    #[inline]
+    #[must_use]
+    pub fn is_normalized(self) -> bool {
+        (self.norm_squared() - 1.0).abs() <= 2.0 * crate::accuracy::IS_NORMALIZED_TOLERANCE
+    }
+
+    /// The angle in [0, pi] radians of the rotation that takes `self` to
+    /// `other`: the angle of `other * self.inv()`, the short way. Zero, up
+    /// to rounding, exactly when they are the same rotation (so
+    /// `q.angle_to(-q)` is 0). This is the right way to compare two
+    /// rotations (never component by component).
+    ///
+    /// # Preconditions
+    ///
+    /// Unit quaternions; NaN or infinite input gives NaN.
+    ///
+    /// # Accuracy
+    ///
+    /// The angle is computed with atan2 from the transition quaternion, so
+    /// it stays accurate for tiny and for nearly pi angles; its error is
+    /// that of one product plus [`accuracy::POW_MAX_ANGLE_ERROR`](crate::accuracy::POW_MAX_ANGLE_ERROR).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let a = Quat::from_rotation_x(0.25);
+    /// let b = Quat::from_rotation_x(1.0);
+    /// assert!((a.angle_to(b) - 0.75).abs() < 1e-6);
+    /// assert_eq!(b.angle_to(-b), 0.0);
+    /// ```
+    #[must_use]
+    pub fn angle_to(self, other: Self) -> f32 {
+        (other * self.inv()).to_axis_angle().1
+    }
+
+    /// The Hamilton product `self * other`, pulled back towards unit norm by
+    /// one Newton step for `1 / sqrt(n)`, `n` being the product's squared
+    /// norm: the product times `(3 - n) / 2`. No square root, no division.
+    ///
+    /// For long integration chains (a gyro integrator multiplying millions
+    /// of small rotations): plain products let the rounding errors of the
+    /// norm add up, while here a product whose squared norm is `1 + e` comes
+    /// out with a norm of `1 - 3 e^2 / 8` plus one rounding, so the drift
+    /// cannot accumulate.
+    ///
+    /// # Preconditions
+    ///
+    /// `self` and `other` are unit quaternions, or nearly so (the step
+    /// converges towards 1 for squared norms in (0, 3), and fastest near 1).
+    /// NaN or infinite input gives a NaN or infinite result.
+    ///
+    /// # Accuracy
+    ///
+    /// The rotation is that of `self * other` (the scale does not change it);
+    /// the norm stays within
+    /// [`accuracy::RENORMALIZED_CHAIN_NORM_ERROR`](crate::accuracy::RENORMALIZED_CHAIN_NORM_ERROR)
+    /// of 1 over a chain of 1,000,000 products
+    /// (`renormalized_product_chain_stays_unit` in `tests/edge_cases.rs`).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use rigtform::Quat;
+    /// let step = Quat::from_rotation_z(1e-3).mul_renormalized(Quat::from_rotation_x(2e-3));
+    /// let mut q = Quat::IDENTITY;
+    /// for _ in 0..100_000 {
+    ///     q = q.mul_renormalized(step);
+    /// }
+    /// assert!((q.norm() - 1.0).abs() < 1e-6);
     /// ```
     #[inline]
-    fn neg(self) -> Quat {
-        Quat::from_wxyz(-self.w, -self.x, -self.y, -self.z)
+    #[must_use]
+    pub fn mul_renormalized(self, other: Self) -> Self {
+        let p = self * other;
+        let s = (3.0 - p.norm_squared()) * 0.5;
+        p.map(|c| c * s)
+    }
+
+    /// `a self + b other`, component-wise: the sum under slerp, nlerp and
+    /// blend.
+    #[inline]
+    pub(crate) fn weighted_sum(self, a: f32, other: Self, b: f32) -> Self {
+        Self::from_wxyz(
+            a * self.w + b * other.w,
+            a * self.x + b * other.x,
+            a * self.y + b * other.y,
+            a * self.z + b * other.z,
+        )
+    }
+
+    /// `f` of each component: the one place a `Quat`'s components are
+    /// scaled one by one.
+    #[inline(always)]
+    pub(super) fn map(self, f: impl Fn(f32) -> f32) -> Self {
+        Self::from_wxyz(f(self.w), f(self.x), f(self.y), f(self.z))
     }
 }
+
+euclidean!(Quat { x, y, z, w }, unit IDENTITY, contract(normalize_requires, normalize_ensures));
 
 // The further concepts, in the order the documentation lists their
-// methods: the type's own first, then interpolation, glam's and nalgebra's
-// names last.
+// methods: construction and conversion first, then the products,
+// interpolation, glam's and nalgebra's names last.
 
-mod basics;
+mod construction;
+
+mod conversion;
+
+mod ops;
 
 mod power;
 
@@ -287,53 +285,12 @@ mod exp_log;
 
 pub(crate) mod catmull_rom;
 
-mod arithmetic;
-
-mod product;
-
 mod other_names;
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use core::f32::consts::PI;
-
-    #[test]
-    fn product_of_axis_rotations_matches_the_notes_formula() {
-        // i j = k, j k = i, k i = j (Hamilton).
-        let i = Quat::from_wxyz(0.0, 1.0, 0.0, 0.0);
-        let j = Quat::from_wxyz(0.0, 0.0, 1.0, 0.0);
-        let k = Quat::from_wxyz(0.0, 0.0, 0.0, 1.0);
-        assert_eq!(i * j, k);
-        assert_eq!(j * k, i);
-        assert_eq!(k * i, j);
-        assert_eq!(i * i, Quat::from_wxyz(-1.0, 0.0, 0.0, 0.0));
-    }
-
-    #[test]
-    fn rotations_about_the_axes_follow_the_right_hand_rule() {
-        let quarter = core::f32::consts::FRAC_PI_2;
-        let cases = [
-            (Quat::from_rotation_x(quarter), Cvec3::X, Cvec3::Y, Cvec3::Z),
-            (Quat::from_rotation_y(quarter), Cvec3::Y, Cvec3::Z, Cvec3::X),
-            (Quat::from_rotation_z(quarter), Cvec3::Z, Cvec3::X, Cvec3::Y),
-        ];
-        // The kernel's sine and cosine errors, doubled by the rotation.
-        let tol = 4.0 * crate::accuracy::SIN_COS_MAX_ABS_ERROR;
-        for (q, axis, from, to) in cases {
-            assert!((q * from - to).norm() <= tol, "{q:?}");
-            assert!((q * axis - axis).norm() <= tol, "{q:?}");
-            for angle in [-2.5f32, 0.3, 3.0] {
-                let about = Quat::from_axis_angle(axis, angle);
-                let named = match axis {
-                    Cvec3::X => Quat::from_rotation_x(angle),
-                    Cvec3::Y => Quat::from_rotation_y(angle),
-                    _ => Quat::from_rotation_z(angle),
-                };
-                assert_eq!(named, about);
-            }
-        }
-    }
+    use rand::{Rng, SeedableRng};
 
     #[test]
     fn norm_squared_is_the_sum_of_the_four_squares() {
@@ -341,10 +298,33 @@ mod tests {
         assert_eq!(Quat::from_wxyz(0.0, 3.0, 0.0, 4.0).norm(), 5.0);
     }
 
+    /// Each operator against glam's on the same components, bit for bit:
+    /// both are one IEEE 754 operation per component.
     #[test]
-    fn to_axis_angle_of_a_half_turn_is_pi() {
-        let (axis, angle) = Quat::from_wxyz(0.0, 0.0, 0.0, -1.0).to_axis_angle();
-        assert_eq!(axis, -Cvec3::Z);
-        assert_eq!(angle, PI);
+    fn operators_agree_with_glam_bit_for_bit() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(26);
+        let bits = |q: Quat| q.to_array().map(f32::to_bits);
+        let g = |q: Quat| glam::Quat::from_array(q.to_array());
+        let r = |q: glam::Quat| Quat::from_array(q.to_array());
+        for _ in 0..10_000 {
+            let mut draw =
+                || Quat::from_array(core::array::from_fn(|_| rng.random_range(-4.0..4.0)));
+            let (a, b) = (draw(), draw());
+            let s = rng.random_range(-3.0f32..3.0);
+            assert_eq!(bits(a + b), bits(r(g(a) + g(b))));
+            assert_eq!(bits(a - b), bits(r(g(a) - g(b))));
+            assert_eq!(bits(a * s), bits(r(g(a) * s)));
+            assert_eq!(bits(s * a), bits(r(g(a) * s)));
+            assert_eq!(bits(a / s), bits(r(g(a) / s)));
+            let sum: Quat = [a, b, a].iter().sum();
+            assert_eq!(bits(sum), bits(r([g(a), g(b), g(a)].iter().sum())));
+            let (mut c, mut d) = (a, a);
+            c += b;
+            d -= b;
+            assert_eq!((c, d), (a + b, a - b));
+            c *= s;
+            d /= s;
+            assert_eq!((c, d), ((a + b) * s, (a - b) / s));
+        }
     }
 }

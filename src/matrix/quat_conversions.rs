@@ -3,8 +3,8 @@
 //! glam's and nalgebra's names for these conversions. They live with the
 //! matrices, which the quaternions do not know of.
 
+use crate::matrix::Matrix3;
 use crate::matrix::Matrix4;
-use crate::matrix3::Matrix3;
 use crate::quat::Quat;
 
 impl Quat {

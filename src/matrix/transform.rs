@@ -4,7 +4,7 @@
 //! [`Matrix3`].
 
 use super::Matrix4;
-use crate::matrix3::Matrix3;
+use crate::matrix::Matrix3;
 use crate::quat::Quat;
 use crate::rigtform::RigTForm;
 use crate::vec::{Cvec3, Cvec4};
@@ -195,37 +195,6 @@ impl Matrix4 {
     pub fn project_point3(&self, p: Cvec3) -> Cvec3 {
         let h = *self * Cvec4::from_point(p);
         h.xyz() / h.w
-    }
-
-    /// The column `i` (0 to 3; column 3 holds the translation), or
-    /// [`Cvec4::NAN`] for any other index (glam's `Mat4::col` panics
-    /// there; this never does).
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Cvec4, Matrix4};
-    /// let m = Matrix4::from_translation(Cvec3::new(1.0, 2.0, 3.0));
-    /// assert_eq!(m.col(3), Cvec4::new(1.0, 2.0, 3.0, 1.0));
-    /// assert!(m.col(4).is_nan());
-    /// ```
-    #[inline]
-    #[must_use]
-    pub fn col(&self, i: usize) -> Cvec4 {
-        self.cols.get(i).copied().unwrap_or(Cvec4::NAN)
-    }
-
-    /// The row `i` (0 to 3), or [`Cvec4::NAN`] for any other index
-    /// (glam's `Mat4::row` panics there; this never does).
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Cvec4, Matrix4};
-    /// let m = Matrix4::from_translation(Cvec3::new(1.0, 2.0, 3.0));
-    /// assert_eq!(m.row(0), Cvec4::new(1.0, 0.0, 0.0, 1.0));
-    /// assert!(m.row(usize::MAX).is_nan());
-    /// ```
-    #[inline]
-    #[must_use]
-    pub fn row(&self, i: usize) -> Cvec4 {
-        self.transpose().col(i)
     }
 
     /// The normal matrix as a [`Matrix3`] (a shader's `mat3`): the inverse

@@ -107,49 +107,6 @@ impl Quat {
         self.vector()
     }
 
-    /// `self * v`, the rotated vector: glam's name.
-    ///
-    /// # Preconditions
-    ///
-    /// As `Quat * Cvec3`: `self` is a unit quaternion.
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Quat};
-    /// let q = Quat::from_rotation_z(0.5);
-    /// assert_eq!(q.mul_vec3(Cvec3::X), q * Cvec3::X);
-    /// ```
-    ///
-    /// `*` calls this method, so its Kani contract (`docs/kani.md`) covers
-    /// both spellings.
-    #[cfg_attr(kani, kani::requires(crate::kani_contracts::rotate_requires(self, v)))]
-    #[cfg_attr(kani, kani::ensures(|r: &Cvec3| crate::kani_contracts::rotate_ensures(self, v, *r)))]
-    #[inline]
-    #[must_use]
-    pub fn mul_vec3(self, v: Cvec3) -> Cvec3 {
-        super::rotate(self, v)
-    }
-
-    /// `self * other`, the Hamilton product: glam's name.
-    ///
-    /// ```
-    /// use rigtform::Quat;
-    /// let (a, b) = (Quat::from_rotation_x(0.2), Quat::from_rotation_y(0.7));
-    /// assert_eq!(a.mul_quat(b), a * b);
-    /// ```
-    ///
-    /// `*` calls this method, so its Kani contract (`docs/kani.md`) covers
-    /// both spellings.
-    #[cfg_attr(
-        kani,
-        kani::requires(crate::kani_contracts::quat_mul_requires(self, other))
-    )]
-    #[cfg_attr(kani, kani::ensures(|r: &Quat| crate::kani_contracts::quat_mul_ensures(self, other, *r)))]
-    #[inline]
-    #[must_use]
-    pub fn mul_quat(self, other: Self) -> Self {
-        super::product::hamilton(self, other)
-    }
-
     /// `1 / |self|`, glam's `length_recip`.
     ///
     /// ```

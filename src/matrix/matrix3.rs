@@ -1,18 +1,11 @@
 //! [`Matrix3`]: a 3x3 matrix, for the normal matrix a shader takes as a
-//! `mat3` and for the linear part of an affine map.
+//! `mat3` and for the linear part of an affine map. What it shares with
+//! [`Matrix4`] is instanced at the bottom from `matrix/template.rs`.
 
-use core::ops::{Mul, MulAssign};
-
-use crate::matrix::Matrix4;
+use super::template::{columns, largest_magnitude, INVERSE_ENTRY_LIMIT, INVERSE_MINOR_LIMIT};
+use super::Matrix4;
 use crate::quat::Quat;
 use crate::vec::Cvec3;
-
-/// 2^63: the largest entry [`Matrix3::inverse`] takes (each product of two
-/// entries, and each 2x2 minor, is then finite).
-const INVERSE_ENTRY_LIMIT: f32 = 9.223_372e18;
-/// 2^62: the largest 2x2 minor [`Matrix3::inverse`] takes (each product of
-/// an entry and a minor, and the determinant, is then finite).
-const INVERSE_MINOR_LIMIT: f32 = 4.611_686e18;
 
 /// A 3x3 matrix in the conventions of [`Matrix4`]: column vectors
 /// (`m * v`), stored column-major, so [`to_cols_array`](Self::to_cols_array)
@@ -42,11 +35,6 @@ impl Default for Matrix3 {
     fn default() -> Self {
         Self::IDENTITY
     }
-}
-
-/// The largest `|x|` of `values` (0 for none), by comparisons only.
-fn largest_magnitude(values: &[f32]) -> f32 {
-    values.iter().fold(0.0, |m: f32, v| m.max(v.abs()))
 }
 
 impl Matrix3 {
@@ -137,35 +125,6 @@ impl Matrix3 {
     #[must_use]
     pub fn from_mat4(m: Matrix4) -> Self {
         Self::from(m)
-    }
-
-    /// The column `i` (0, 1 or 2); [`Cvec3::NAN`] for any other index
-    /// (glam's `Mat3::col` panics there; this never does).
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Matrix3};
-    /// assert_eq!(Matrix3::IDENTITY.col(1), Cvec3::Y);
-    /// assert!(Matrix3::IDENTITY.col(3).is_nan());
-    /// ```
-    #[inline]
-    #[must_use]
-    pub fn col(&self, i: usize) -> Cvec3 {
-        self.cols.get(i).copied().unwrap_or(Cvec3::NAN)
-    }
-
-    /// The row `i` (0, 1 or 2); [`Cvec3::NAN`] for any other index
-    /// (glam's `Mat3::row` panics there; this never does).
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Matrix3};
-    /// let m = Matrix3::from_cols(Cvec3::X, Cvec3::new(5.0, 1.0, 0.0), Cvec3::Z);
-    /// assert_eq!(m.row(0), Cvec3::new(1.0, 5.0, 0.0));
-    /// assert!(m.row(7).is_nan());
-    /// ```
-    #[inline]
-    #[must_use]
-    pub fn row(&self, i: usize) -> Cvec3 {
-        self.transpose().col(i)
     }
 
     /// The transpose.
@@ -260,18 +219,6 @@ impl Matrix3 {
         let inverse = Self::from_cols(bc * inv_det, ca * inv_det, ab * inv_det).transpose();
         inverse.is_finite().then_some(inverse)
     }
-
-    /// `true` if every entry is finite.
-    ///
-    /// ```
-    /// assert!(rigtform::Matrix3::IDENTITY.is_finite());
-    /// assert!(!rigtform::Matrix3::NAN.is_finite());
-    /// ```
-    #[inline]
-    #[must_use]
-    pub fn is_finite(self) -> bool {
-        self.cols.iter().all(|c| c.is_finite())
-    }
 }
 
 impl From<Matrix4> for Matrix3 {
@@ -310,70 +257,7 @@ impl From<Matrix3> for Matrix4 {
     }
 }
 
-impl From<[f32; 9]> for Matrix3 {
-    /// Same as [`Matrix3::from_cols_array`]: column-major.
-    #[inline]
-    fn from(m: [f32; 9]) -> Self {
-        Self::from_cols_array(&m)
-    }
-}
-
-impl From<Matrix3> for [f32; 9] {
-    /// Same as [`Matrix3::to_cols_array`]: column-major.
-    #[inline]
-    fn from(m: Matrix3) -> Self {
-        m.to_cols_array()
-    }
-}
-
-impl Mul<Cvec3> for Matrix3 {
-    type Output = Cvec3;
-
-    /// The matrix times a column vector.
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Matrix3};
-    /// let v = Cvec3::new(1.0, 2.0, 3.0);
-    /// assert_eq!(Matrix3::IDENTITY * v, v);
-    /// ```
-    #[inline]
-    fn mul(self, v: Cvec3) -> Cvec3 {
-        let [a, b, c] = self.cols;
-        a * v.x + b * v.y + c * v.z
-    }
-}
-
-impl Mul<Matrix3> for Matrix3 {
-    type Output = Matrix3;
-
-    /// The matrix product; `(a * b) * v == a * (b * v)`.
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Matrix3};
-    /// let m = Matrix3::from_cols(Cvec3::X, Cvec3::new(5.0, 1.0, 0.0), Cvec3::Z);
-    /// assert_eq!(m * Matrix3::IDENTITY, m);
-    /// ```
-    #[inline]
-    fn mul(self, o: Matrix3) -> Matrix3 {
-        let [a, b, c] = o.cols;
-        Matrix3::from_cols(self * a, self * b, self * c)
-    }
-}
-
-impl MulAssign<Matrix3> for Matrix3 {
-    /// `*self = *self * other`.
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Matrix3};
-    /// let mut m = Matrix3::from_cols(Cvec3::X, Cvec3::new(5.0, 1.0, 0.0), Cvec3::Z);
-    /// m *= Matrix3::IDENTITY;
-    /// assert_eq!(m.cols[1].x, 5.0);
-    /// ```
-    #[inline]
-    fn mul_assign(&mut self, other: Matrix3) {
-        *self = *self * other;
-    }
-}
+columns!(Matrix3, Cvec3, 9, { a: x, b: y, c: z });
 
 #[cfg(test)]
 mod tests {
