@@ -210,6 +210,7 @@ mod display;
 mod features;
 mod float;
 mod matrix;
+mod other_names;
 mod quat;
 mod rigtform;
 #[cfg(test)]

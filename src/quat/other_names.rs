@@ -9,6 +9,7 @@
 //! (tests below hold them against those crates).
 
 use super::{EulerRot, Quat};
+use crate::other_names::renamed;
 use crate::vec::Cvec3;
 
 impl Quat {
@@ -212,161 +213,130 @@ impl Quat {
         self.inv() * p
     }
 
-    /// nalgebra's `scaled_axis`: here [`to_scaled_axis`](Self::to_scaled_axis).
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// let q = rigtform::Quat::from_rotation_x(0.5);
-    /// assert_eq!(q.scaled_axis(), q.to_scaled_axis());
-    /// ```
-    #[deprecated(since = "0.1.0", note = "use `Quat::to_scaled_axis`")]
-    #[inline]
-    #[must_use]
-    pub fn scaled_axis(self) -> Cvec3 {
-        self.to_scaled_axis()
-    }
+    renamed! {
+        /// nalgebra's `scaled_axis`: here [`to_scaled_axis`](Self::to_scaled_axis).
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// let q = rigtform::Quat::from_rotation_x(0.5);
+        /// assert_eq!(q.scaled_axis(), q.to_scaled_axis());
+        /// ```
+        note "use `Quat::to_scaled_axis`";
+        pub fn scaled_axis(self) -> Cvec3 {
+            self.to_scaled_axis()
+        }
 
-    /// nalgebra's `axis_angle` (an `Option`): here
-    /// [`to_axis_angle`](Self::to_axis_angle), which gives the x axis and 0
-    /// for no rotation.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// let q = rigtform::Quat::from_rotation_x(0.5);
-    /// assert_eq!(q.axis_angle(), q.to_axis_angle());
-    /// ```
-    #[deprecated(
-        since = "0.1.0",
-        note = "use `Quat::to_axis_angle`, which returns (axis, angle)"
-    )]
-    #[inline]
-    #[must_use]
-    pub fn axis_angle(self) -> (Cvec3, f32) {
-        self.to_axis_angle()
-    }
+        /// nalgebra's `axis_angle` (an `Option`): here
+        /// [`to_axis_angle`](Self::to_axis_angle), which gives the x axis and 0
+        /// for no rotation.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// let q = rigtform::Quat::from_rotation_x(0.5);
+        /// assert_eq!(q.axis_angle(), q.to_axis_angle());
+        /// ```
+        note "use `Quat::to_axis_angle`, which returns (axis, angle)";
+        pub fn axis_angle(self) -> (Cvec3, f32) {
+            self.to_axis_angle()
+        }
 
-    /// nalgebra's `rotation_between(a, b)` (an `Option`): here
-    /// [`from_rotation_arc`](Self::from_rotation_arc), which takes any two
-    /// non-zero directions, opposite ones included.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Cvec3, Quat};
-    /// assert_eq!(Quat::rotation_between(Cvec3::X, Cvec3::Y), Quat::from_rotation_arc(Cvec3::X, Cvec3::Y));
-    /// ```
-    #[deprecated(since = "0.1.0", note = "use `Quat::from_rotation_arc(from, to)`")]
-    #[inline]
-    #[must_use]
-    pub fn rotation_between(from: Cvec3, to: Cvec3) -> Self {
-        Self::from_rotation_arc(from, to)
-    }
+        /// nalgebra's `rotation_between(a, b)` (an `Option`): here
+        /// [`from_rotation_arc`](Self::from_rotation_arc), which takes any two
+        /// non-zero directions, opposite ones included.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Cvec3, Quat};
+        /// assert_eq!(Quat::rotation_between(Cvec3::X, Cvec3::Y), Quat::from_rotation_arc(Cvec3::X, Cvec3::Y));
+        /// ```
+        note "use `Quat::from_rotation_arc(from, to)`";
+        pub fn rotation_between(from: Cvec3, to: Cvec3) -> Self {
+            Self::from_rotation_arc(from, to)
+        }
 
-    /// glam's and nalgebra's `inverse`: the notes call it `inv`.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::Quat;
-    /// let q = Quat::from_rotation_x(0.3);
-    /// assert_eq!(q.inverse(), q.inv());
-    /// ```
-    #[deprecated(
-        since = "0.1.0",
-        note = "the notes' name is `inv`: use `Quat::inv` (the conjugate, the inverse of a unit quaternion)"
-    )]
-    #[inline]
-    #[must_use]
-    pub fn inverse(self) -> Self {
-        self.inv()
-    }
+        /// glam's and nalgebra's `inverse`: the notes call it `inv`.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::Quat;
+        /// let q = Quat::from_rotation_x(0.3);
+        /// assert_eq!(q.inverse(), q.inv());
+        /// ```
+        note "the notes' name is `inv`: use `Quat::inv` (the conjugate, the inverse of a unit quaternion)";
+        pub fn inverse(self) -> Self {
+            self.inv()
+        }
 
-    /// glam's `lerp` (sign-aligned, normalized): here `nlerp`.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::Quat;
-    /// let (a, b) = (Quat::from_rotation_x(0.2), Quat::from_rotation_x(0.6));
-    /// assert_eq!(a.lerp(b, 0.5), a.nlerp(b, 0.5));
-    /// ```
-    #[deprecated(
-        since = "0.1.0",
-        note = "a normalized, sign-aligned lerp is `Quat::nlerp` here (and `Quat::slerp` the spherical one)"
-    )]
-    #[inline]
-    #[must_use]
-    pub fn lerp(self, other: Self, alpha: f32) -> Self {
-        self.nlerp(other, alpha)
-    }
+        /// glam's `lerp` (sign-aligned, normalized): here `nlerp`.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::Quat;
+        /// let (a, b) = (Quat::from_rotation_x(0.2), Quat::from_rotation_x(0.6));
+        /// assert_eq!(a.lerp(b, 0.5), a.nlerp(b, 0.5));
+        /// ```
+        note "a normalized, sign-aligned lerp is `Quat::nlerp` here (and `Quat::slerp` the spherical one)";
+        pub fn lerp(self, other: Self, alpha: f32) -> Self {
+            self.nlerp(other, alpha)
+        }
 
-    /// nalgebra's `powf`: the notes' `pow`.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::Quat;
-    /// let q = Quat::from_rotation_x(1.2);
-    /// assert_eq!(q.powf(0.5), q.pow(0.5));
-    /// ```
-    #[deprecated(since = "0.1.0", note = "the notes' name is `pow`: use `Quat::pow`")]
-    #[inline]
-    #[must_use]
-    pub fn powf(self, alpha: f32) -> Self {
-        self.pow(alpha)
-    }
+        /// nalgebra's `powf`: the notes' `pow`.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::Quat;
+        /// let q = Quat::from_rotation_x(1.2);
+        /// assert_eq!(q.powf(0.5), q.pow(0.5));
+        /// ```
+        note "the notes' name is `pow`: use `Quat::pow`";
+        pub fn powf(self, alpha: f32) -> Self {
+            self.pow(alpha)
+        }
 
-    /// nalgebra's `UnitQuaternion::identity()`: the constant
-    /// [`Quat::IDENTITY`].
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// assert_eq!(rigtform::Quat::identity(), rigtform::Quat::IDENTITY);
-    /// ```
-    #[deprecated(since = "0.1.0", note = "use the constant `Quat::IDENTITY`")]
-    #[inline]
-    #[must_use]
-    pub const fn identity() -> Self {
-        Self::IDENTITY
-    }
+        /// nalgebra's `UnitQuaternion::identity()`: the constant
+        /// [`Quat::IDENTITY`].
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// assert_eq!(rigtform::Quat::identity(), rigtform::Quat::IDENTITY);
+        /// ```
+        note "use the constant `Quat::IDENTITY`";
+        pub const fn identity() -> Self {
+            Self::IDENTITY
+        }
 
-    /// nalgebra's `from_euler_angles(roll, pitch, yaw)`: the rotation
-    /// `Rz(yaw) Ry(pitch) Rx(roll)`, which is
-    /// `Quat::from_euler(EulerRot::ZYX, yaw, pitch, roll)` here.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{EulerRot, Quat};
-    /// assert_eq!(
-    ///     Quat::from_euler_angles(0.1, 0.2, 0.3),
-    ///     Quat::from_euler(EulerRot::ZYX, 0.3, 0.2, 0.1)
-    /// );
-    /// ```
-    #[deprecated(
-        since = "0.1.0",
-        note = "use `Quat::from_euler(EulerRot::ZYX, yaw, pitch, roll)`: the order is in its first argument"
-    )]
-    #[inline]
-    #[must_use]
-    pub fn from_euler_angles(roll: f32, pitch: f32, yaw: f32) -> Self {
-        Self::from_euler(EulerRot::ZYX, yaw, pitch, roll)
-    }
+        /// nalgebra's `from_euler_angles(roll, pitch, yaw)`: the rotation
+        /// `Rz(yaw) Ry(pitch) Rx(roll)`, which is
+        /// `Quat::from_euler(EulerRot::ZYX, yaw, pitch, roll)` here.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{EulerRot, Quat};
+        /// assert_eq!(
+        ///     Quat::from_euler_angles(0.1, 0.2, 0.3),
+        ///     Quat::from_euler(EulerRot::ZYX, 0.3, 0.2, 0.1)
+        /// );
+        /// ```
+        note "use `Quat::from_euler(EulerRot::ZYX, yaw, pitch, roll)`: the order is in its first argument";
+        pub fn from_euler_angles(roll: f32, pitch: f32, yaw: f32) -> Self {
+            Self::from_euler(EulerRot::ZYX, yaw, pitch, roll)
+        }
 
-    /// nalgebra's `euler_angles()`: `(roll, pitch, yaw)`, which is
-    /// `to_euler(EulerRot::ZYX)` in reverse here.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{EulerRot, Quat};
-    /// let q = Quat::from_euler(EulerRot::ZYX, 0.3, 0.2, 0.1);
-    /// let (roll, pitch, yaw) = q.euler_angles();
-    /// assert_eq!((yaw, pitch, roll), q.to_euler(EulerRot::ZYX));
-    /// ```
-    #[deprecated(
-        since = "0.1.0",
-        note = "use `q.to_euler(EulerRot::ZYX)`, which returns (yaw, pitch, roll)"
-    )]
-    #[inline]
-    #[must_use]
-    pub fn euler_angles(self) -> (f32, f32, f32) {
-        let (yaw, pitch, roll) = self.to_euler(EulerRot::ZYX);
-        (roll, pitch, yaw)
+        /// nalgebra's `euler_angles()`: `(roll, pitch, yaw)`, which is
+        /// `to_euler(EulerRot::ZYX)` in reverse here.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{EulerRot, Quat};
+        /// let q = Quat::from_euler(EulerRot::ZYX, 0.3, 0.2, 0.1);
+        /// let (roll, pitch, yaw) = q.euler_angles();
+        /// assert_eq!((yaw, pitch, roll), q.to_euler(EulerRot::ZYX));
+        /// ```
+        note "use `q.to_euler(EulerRot::ZYX)`, which returns (yaw, pitch, roll)";
+        pub fn euler_angles(self) -> (f32, f32, f32) {
+            let (yaw, pitch, roll) = self.to_euler(EulerRot::ZYX);
+            (roll, pitch, yaw)
+        }
     }
 }
 

@@ -9,6 +9,7 @@
 use core::ops::Mul;
 
 use super::RigTForm;
+use crate::other_names::renamed;
 use crate::quat::Quat;
 use crate::vec::Cvec3;
 
@@ -167,121 +168,100 @@ impl RigTForm {
         Self::look_at(eye, target, up).inv()
     }
 
-    /// nalgebra's `Isometry3::from_parts(translation, rotation)`: here
-    /// [`RigTForm::new(t, r)`](Self::new).
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Cvec3, Quat, RigTForm};
-    /// assert_eq!(RigTForm::from_parts(Cvec3::X, Quat::IDENTITY), RigTForm::new(Cvec3::X, Quat::IDENTITY));
-    /// ```
-    #[deprecated(since = "0.1.0", note = "use `RigTForm::new(t, r)`")]
-    #[inline]
-    #[must_use]
-    pub const fn from_parts(t: Cvec3, r: Quat) -> Self {
-        Self::new(t, r)
-    }
+    renamed! {
+        /// nalgebra's `Isometry3::from_parts(translation, rotation)`: here
+        /// [`RigTForm::new(t, r)`](Self::new).
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Cvec3, Quat, RigTForm};
+        /// assert_eq!(RigTForm::from_parts(Cvec3::X, Quat::IDENTITY), RigTForm::new(Cvec3::X, Quat::IDENTITY));
+        /// ```
+        note "use `RigTForm::new(t, r)`";
+        pub const fn from_parts(t: Cvec3, r: Quat) -> Self {
+            Self::new(t, r)
+        }
 
-    /// glam's and nalgebra's `inverse`: the notes call it `inv`.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Cvec3, Quat, RigTForm};
-    /// let a = RigTForm::new(Cvec3::X, Quat::from_rotation_y(0.3));
-    /// assert_eq!(a.inverse(), a.inv());
-    /// ```
-    #[deprecated(
-        since = "0.1.0",
-        note = "the notes' name is `inv`: use `RigTForm::inv`"
-    )]
-    #[inline]
-    #[must_use]
-    pub fn inverse(self) -> Self {
-        self.inv()
-    }
+        /// glam's and nalgebra's `inverse`: the notes call it `inv`.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Cvec3, Quat, RigTForm};
+        /// let a = RigTForm::new(Cvec3::X, Quat::from_rotation_y(0.3));
+        /// assert_eq!(a.inverse(), a.inv());
+        /// ```
+        note "the notes' name is `inv`: use `RigTForm::inv`";
+        pub fn inverse(self) -> Self {
+            self.inv()
+        }
 
-    /// A `lerp` of two frames: here [`interpolate`](Self::interpolate)
-    /// (the translation lerped, the rotation slerped), as nalgebra's
-    /// `Isometry3::lerp_slerp`.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Cvec3, Quat, RigTForm};
-    /// let (a, b) = (RigTForm::IDENTITY, RigTForm::new(Cvec3::X, Quat::from_rotation_z(1.0)));
-    /// assert_eq!(a.lerp(b, 0.5), a.interpolate(b, 0.5));
-    /// ```
-    #[deprecated(
-        since = "0.1.0",
-        note = "the notes' name is `interpolate`: use `RigTForm::interpolate` (lerp of t, slerp of r)"
-    )]
-    #[inline]
-    #[must_use]
-    pub fn lerp(self, other: Self, alpha: f32) -> Self {
-        self.interpolate(other, alpha)
-    }
+        /// A `lerp` of two frames: here [`interpolate`](Self::interpolate)
+        /// (the translation lerped, the rotation slerped), as nalgebra's
+        /// `Isometry3::lerp_slerp`.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Cvec3, Quat, RigTForm};
+        /// let (a, b) = (RigTForm::IDENTITY, RigTForm::new(Cvec3::X, Quat::from_rotation_z(1.0)));
+        /// assert_eq!(a.lerp(b, 0.5), a.interpolate(b, 0.5));
+        /// ```
+        note "the notes' name is `interpolate`: use `RigTForm::interpolate` (lerp of t, slerp of r)";
+        pub fn lerp(self, other: Self, alpha: f32) -> Self {
+            self.interpolate(other, alpha)
+        }
 
-    /// nalgebra's `lerp_slerp`: here [`interpolate`](Self::interpolate).
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Cvec3, Quat, RigTForm};
-    /// let (a, b) = (RigTForm::IDENTITY, RigTForm::new(Cvec3::X, Quat::from_rotation_z(1.0)));
-    /// assert_eq!(a.lerp_slerp(b, 0.5), a.interpolate(b, 0.5));
-    /// ```
-    #[deprecated(
-        since = "0.1.0",
-        note = "the notes' name is `interpolate`: use `RigTForm::interpolate`"
-    )]
-    #[inline]
-    #[must_use]
-    pub fn lerp_slerp(self, other: Self, alpha: f32) -> Self {
-        self.interpolate(other, alpha)
-    }
+        /// nalgebra's `lerp_slerp`: here [`interpolate`](Self::interpolate).
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Cvec3, Quat, RigTForm};
+        /// let (a, b) = (RigTForm::IDENTITY, RigTForm::new(Cvec3::X, Quat::from_rotation_z(1.0)));
+        /// assert_eq!(a.lerp_slerp(b, 0.5), a.interpolate(b, 0.5));
+        /// ```
+        note "the notes' name is `interpolate`: use `RigTForm::interpolate`";
+        pub fn lerp_slerp(self, other: Self, alpha: f32) -> Self {
+            self.interpolate(other, alpha)
+        }
 
-    /// glam's `Affine3A::transform_point3`: here
-    /// [`transform_point`](Self::transform_point).
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Cvec3, RigTForm};
-    /// let a = RigTForm::from_translation(Cvec3::X);
-    /// assert_eq!(a.transform_point3(Cvec3::Y), a.transform_point(Cvec3::Y));
-    /// ```
-    #[deprecated(since = "0.1.0", note = "use `RigTForm::transform_point`")]
-    #[inline]
-    #[must_use]
-    pub fn transform_point3(self, p: Cvec3) -> Cvec3 {
-        self.transform_point(p)
-    }
+        /// glam's `Affine3A::transform_point3`: here
+        /// [`transform_point`](Self::transform_point).
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Cvec3, RigTForm};
+        /// let a = RigTForm::from_translation(Cvec3::X);
+        /// assert_eq!(a.transform_point3(Cvec3::Y), a.transform_point(Cvec3::Y));
+        /// ```
+        note "use `RigTForm::transform_point`";
+        pub fn transform_point3(self, p: Cvec3) -> Cvec3 {
+            self.transform_point(p)
+        }
 
-    /// glam's `Affine3A::transform_vector3`: here
-    /// [`transform_vector`](Self::transform_vector).
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Cvec3, RigTForm};
-    /// let a = RigTForm::from_translation(Cvec3::X);
-    /// assert_eq!(a.transform_vector3(Cvec3::Y), Cvec3::Y);
-    /// ```
-    #[deprecated(since = "0.1.0", note = "use `RigTForm::transform_vector`")]
-    #[inline]
-    #[must_use]
-    pub fn transform_vector3(self, v: Cvec3) -> Cvec3 {
-        self.transform_vector(v)
-    }
+        /// glam's `Affine3A::transform_vector3`: here
+        /// [`transform_vector`](Self::transform_vector).
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Cvec3, RigTForm};
+        /// let a = RigTForm::from_translation(Cvec3::X);
+        /// assert_eq!(a.transform_vector3(Cvec3::Y), Cvec3::Y);
+        /// ```
+        note "use `RigTForm::transform_vector`";
+        pub fn transform_vector3(self, v: Cvec3) -> Cvec3 {
+            self.transform_vector(v)
+        }
 
-    /// nalgebra's `Isometry3::identity()`: the constant
-    /// [`RigTForm::IDENTITY`].
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// assert_eq!(rigtform::RigTForm::identity(), rigtform::RigTForm::IDENTITY);
-    /// ```
-    #[deprecated(since = "0.1.0", note = "use the constant `RigTForm::IDENTITY`")]
-    #[inline]
-    #[must_use]
-    pub const fn identity() -> Self {
-        Self::IDENTITY
+        /// nalgebra's `Isometry3::identity()`: the constant
+        /// [`RigTForm::IDENTITY`].
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// assert_eq!(rigtform::RigTForm::identity(), rigtform::RigTForm::IDENTITY);
+        /// ```
+        note "use the constant `RigTForm::IDENTITY`";
+        pub const fn identity() -> Self {
+            Self::IDENTITY
+        }
     }
 }
 
