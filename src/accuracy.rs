@@ -133,7 +133,7 @@ pub const SIN_COS_NARROW_MAX_ULP: f32 = 1.0; // 0.858 at 2.3555665
 /// Known: swept: every finite f32 beyond 3 pi/4 (`exhaustive_kernel_sweep`).
 pub const SIN_COS_MAX_ULP: f32 = 1.25; // 0.985 at 2.3279488e23
 /// Relative error of `phi^2` from the arc of slerp's f64 evaluation on
-/// x86-64 and AArch64 (`quat/slerp/in_f64.rs`, `Pair::arc`), against the
+/// x86-64 and AArch64 (`quat/slerp/in_f64.rs`, `Arc::from_quotient`), against the
 /// exact `phi^2 = 4 atan^2(sqrt(t2))` of the quotient `t2 = tan^2(phi / 2)`
 /// that the evaluation computes in f64, for `t2` in [2^-170, 1.0001]. The
 /// error of `t2` itself (the rounding of the f64 sums of squares of the
@@ -143,10 +143,10 @@ pub const SIN_COS_MAX_ULP: f32 = 1.25; // 0.985 at 2.3279488e23
 /// the approximation error of `1 + t2 P(t2)` against `atan(t) / t` by
 /// 1.6959e-8 (`atan_f64.sollya`), which `phi^2` takes twice, and Gappa the
 /// f64 rounding. Swept: every f32 `t2` of [2^-30, 1]
-/// (`exhaustive_kernel_sweep_f64` in `quat/slerp/kernels_f64.rs`).
+/// (`exhaustive_kernel_sweep_f64` in `quat/slerp/in_f64/tests.rs`).
 pub const PHI_SQUARED_F64_MAX_REL_ERROR: f32 = 3.4e-8; // 3.340e-8 at t2 = 0.8781245 swept, 3.392e-8 proven
 /// Relative error of `phi / sin(phi)` from the arc of slerp's f64
-/// evaluation (`Pair::arc`), on the domain of
+/// evaluation (`Arc::from_quotient`), on the domain of
 /// [`PHI_SQUARED_F64_MAX_REL_ERROR`] and against the exact value for the
 /// same `t2`.
 ///
@@ -165,7 +165,7 @@ pub const PHI_OVER_SINE_F64_MAX_REL_ERROR: f32 = 1.7e-8; // 1.670e-8 at t2 = 0.8
 pub const SINC_F64_MAX_REL_ERROR: f32 = 6.1e-9; // 6.054e-9 at x = 1.4982078 swept, 6.0967e-9 proven
 /// Relative error of slerp's coefficients `sin((1 - alpha) phi) / sin(phi)`
 /// and `sin(alpha phi) / sin(phi)` in its f64 evaluation
-/// (`quat/slerp/in_f64.rs`, `Arc::coefficients`) before their rounding to
+/// (`quat/slerp/in_f64.rs`, `Arc::coefficient`) before their rounding to
 /// f32, for every f32 `alpha` in (0, 1] and the `phi` of the arc's `t2`
 /// (on the domain of [`PHI_SQUARED_F64_MAX_REL_ERROR`], `phi^2` above
 /// 2^-24, where the evaluation applies): the arc's errors, `sin(x) / x`'s

@@ -14,7 +14,7 @@
 //!
 //! The one exception is slerp's own f64 polynomials, its arc and
 //! `sin(x) / x` on x86-64 and AArch64, which live with slerp
-//! (`quat/slerp/kernels_f64.rs`, `in_f64.rs`): nothing else evaluates
+//! (`quat/slerp/in_f64.rs`): nothing else evaluates
 //! them. Nothing
 //! here is evaluated in f64, so on a Cortex-M4F (single-precision FPU) no
 //! soft-float helper is linked. Their
@@ -36,9 +36,6 @@ mod sqrt_kani;
 #[cfg(test)]
 pub(crate) mod sweep;
 
-/// What the portable lanes of `Quat::slerp_slice` use besides.
-#[cfg(any(portable_lanes, all(test, desktop64)))]
-pub(crate) use bits::select_f64;
 pub(crate) use bits::SIGN;
 pub(crate) use norm::{needs_no_rescaling, scale_for_squares, ScaledSquares};
 pub(crate) use sin_cos::sin3;

@@ -190,11 +190,10 @@
 // `vsqrt.f32` (`fpu_sqrt`) on Arm hard-float targets, `sqrtss` and `fsqrt`
 // (`vector_unit_sqrt`) on x86-64 with SSE and AArch64 with NEON; and on
 // x86-64 with SSE the quaternion product in SSE registers
-// (`by_lanes` in src/quat/ops.rs), slerp's pair and weighted
-// sum (src/quat/slerp/in_f64/sse2.rs) and the slice APIs' vector
-// lanes (the `Isa` implementations of src/quat/slerp/slice/sse2.rs and,
-// with AVX, avx.rs: one intrinsic per operation; and `lerp_all_components`
-// in src/rigtform/slice.rs, which sees RigTForms as f32s). There the
+// (`by_lanes` in src/quat/ops.rs), the registers of slerp's f64
+// evaluation (src/quat/slerp/lanes/: sse2.rs and sse2/steps.rs, and with
+// AVX avx.rs: one intrinsic per operation) and `lerp_all_components` in
+// src/rigtform/slice.rs, which sees RigTForms as f32s. There the
 // lint is `deny` and those items allow it; elsewhere it is `forbid`.
 // With the `bytemuck` feature, bytemuck's derive macros write `unsafe impl
 // Pod` and `Zeroable` for the plain-f32 types after checking them (`repr(C)`,
@@ -234,7 +233,7 @@ pub mod kani_kernels {
     /// `proofs/gappa/arc_f64.g`, `sinc_f64.g`, `coefficient_f64.g` and
     /// `coefficient_rest_f64.g` model.
     #[cfg(desktop64)]
-    pub use crate::quat::kernels_f64::{slerp_arc, slerp_coefficients, slerp_sinc};
+    pub use crate::quat::{slerp_arc, slerp_coefficients, slerp_sinc};
 }
 
 /// The conditions of the contracts on the core operations, under Kani and

@@ -26,8 +26,9 @@
 use crate::vec::euclidean;
 
 #[cfg(all(kernels_exported, desktop64))]
-pub(crate) use slerp::kernels_f64;
-pub(crate) use slerp::{slerp_slice_by, Slerped};
+pub use slerp::in_f64::{slerp_arc, slerp_coefficients, slerp_sinc};
+pub(crate) use slerp::slice::{slerp_slice_by, Slerped};
+pub(crate) use slerp::WithRotation;
 
 pub use euler::EulerRot;
 

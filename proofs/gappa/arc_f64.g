@@ -1,7 +1,7 @@
-# The arc of slerp's f64 evaluation (src/quat/slerp/in_f64.rs, Pair::arc)
+# The arc of slerp's f64 evaluation (src/quat/slerp/in_f64.rs, Arc::from_quotient)
 # from the quotient t2 = tan^2(phi / 2) that arc_quotient_f64.g computes:
 # h = 1 + t2 p(t2) with p the degree-7 polynomial of ATAN
-# (src/quat/slerp/kernels_f64.rs) by Estrin's scheme as atan_polynomial
+# (src/quat/slerp/in_f64.rs) by Estrin's scheme as atan_polynomial
 # writes it; phi^2 = (4 t2) (h h) and phi / sin(phi) = h (1 + t2). f64,
 # round to nearest even, every operation rounded. (The quotient's lines are
 # a model of their own: here, every term of the certificate would repeat
@@ -21,7 +21,7 @@
 # |a - cn(b)|^2 over |a + cn(b)|^2, below 1 where the evaluation applies. Below its
 # lower end the code computes arcs too (t2 down to 0) but never uses them:
 # slerp takes the result only where phi^2 is above 2^-24, where t2 is
-# above 2^-27 (kernels_f64.rs's arc_quotient_stays_within_the_models_domain
+# above 2^-27 (in_f64/tests.rs's arc_quotient_stays_within_the_models_domain
 # tests both ends on random, right-angled and nearly identical unit
 # pairs). The error of t2 against the inputs' exact tan^2(phi / 2) is the
 # inputs' error, not part of the bounds.

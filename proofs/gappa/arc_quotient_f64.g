@@ -1,4 +1,4 @@
-# The quotient of slerp's f64 arc (src/quat/slerp/in_f64.rs, Pair::arc,
+# The quotient of slerp's f64 arc (src/quat/slerp/in_f64.rs, Arc::from_quotient,
 # Arc::from_lengths): t2 = near / far, with near = |a - cn(b)|^2 and
 # far = |a + cn(b)|^2 (the tangent of the half angle squared), which
 # arc_f64.g takes on. f64, round to nearest even.

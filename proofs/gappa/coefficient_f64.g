@@ -1,4 +1,4 @@
-# slerp's coefficient of b (src/quat/slerp/in_f64.rs, Arc::coefficients,
+# slerp's coefficient of b (src/quat/slerp/in_f64.rs, Arc::coefficient,
 # c1) before its rounding to f32: from the arc's f64 phi^2 (phi2) and
 # phi / sin(phi) (pos) and the f32 alpha, s = (alpha alpha) phi2,
 # g = sinc(s) as sinc_f64.g, c = (alpha pos) g. f64, round to nearest

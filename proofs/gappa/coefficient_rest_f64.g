@@ -1,4 +1,4 @@
-# slerp's coefficient of a (src/quat/slerp/in_f64.rs, Arc::coefficients,
+# slerp's coefficient of a (src/quat/slerp/in_f64.rs, Arc::coefficient,
 # c0) before its rounding to f32: coefficient_f64.g with the share
 # rest = 1 - alpha (rounded in f64: exact unless alpha is below about
 # 2^-29) in place of alpha. Its hypotheses are coefficient_f64.g's, with

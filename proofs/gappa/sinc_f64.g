@@ -1,6 +1,6 @@
 # The sin(x) / x of slerp's f64 evaluation (src/quat/slerp/in_f64.rs,
 # sinc(s) for s = x^2, x = share phi): q = (S0 + s S1) + (s s) (S2 + s S3),
-# g = 1 + s q, with the coefficients of SIN (src/quat/slerp/kernels_f64.rs).
+# g = 1 + s q, with the coefficients of SIN (src/quat/slerp/in_f64.rs).
 # f64, round to nearest even, every operation rounded.
 #
 # Sc stands for sin(sqrt(s)) / sqrt(s) of the f64 s the code is given. The

@@ -11,14 +11,6 @@ pub(crate) fn select(c: bool, a: f32, b: f32) -> f32 {
     f32::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))
 }
 
-/// [`select`] of f64 values.
-#[cfg(any(portable_lanes, all(test, desktop64)))]
-#[inline]
-pub(crate) fn select_f64(c: bool, a: f64, b: f64) -> f64 {
-    let mask = u64::from(c).wrapping_neg();
-    f64::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -29,14 +21,5 @@ mod tests {
         assert_eq!(select(false, 1.0, -0.0).to_bits(), (-0.0f32).to_bits());
         assert!(select(true, f32::NAN, 1.0).is_nan());
         assert_eq!(select(false, f32::NAN, 2.5), 2.5);
-    }
-
-    #[cfg(any(portable_lanes, all(test, desktop64)))]
-    #[test]
-    fn select_f64_picks_by_the_condition_and_keeps_every_bit() {
-        assert_eq!(select_f64(true, -0.0, 1.0).to_bits(), (-0.0f64).to_bits());
-        assert_eq!(select_f64(false, 1.0, -0.0).to_bits(), (-0.0f64).to_bits());
-        assert!(select_f64(true, f64::NAN, 1.0).is_nan());
-        assert_eq!(select_f64(false, f64::NAN, 2.5), 2.5);
     }
 }

@@ -2,32 +2,27 @@
 //! evaluates it, read top-down:
 //!
 //! - this file: `slerp` itself, which picks the evaluation for the target;
-//! - `slerp/in_f64.rs` (x86-64, AArch64): the in-plane formula in f64,
-//!   its arc from the difference and the sum of the inputs, for the
-//!   ordinary pairs, with the polynomials of `slerp/kernels_f64.rs` (and
-//!   `slerp/in_f64/sse2.rs`, the same in x86-64's vector registers);
+//! - `slerp/in_f64.rs` (x86-64, AArch64): the in-plane formula in f64 for
+//!   the ordinary pairs, with its two polynomials, written once for every
+//!   register it runs in: the single call's, and the slices' many pairs;
+//! - `slerp/lanes.rs`: those registers, one set of signatures, the backend
+//!   chosen at its module declaration (`lanes/sse2.rs`, `lanes/avx.rs`,
+//!   `lanes/portable.rs`);
 //! - `slerp/in_f32.rs`: the whole of slerp in f32 (every input, every
 //!   `alpha`), on every other target, and on x86-64 and AArch64 for what
 //!   the f64 evaluation leaves;
 //! - `slerp/slice.rs`: [`Quat::slerp_slice`] and the slerp of many
-//!   `RigTForm`s' rotations, the f64 evaluation many pairs at a time:
-//!   `slice/steps.rs` in x86-64's vector registers (through `slice/sse2.rs`
-//!   or `slice/avx.rs`), `slice/lanes.rs` in blocks the compiler
-//!   vectorizes.
+//!   `RigTForm`s' rotations: `slice/steps.rs` on x86-64, `slice/blocks.rs`
+//!   in blocks the compiler vectorizes.
 
 use super::Quat;
 
 mod in_f32;
 #[cfg(desktop64)]
-mod in_f64;
-// The polynomials of the f64 evaluation (`ATAN`, `SIN`), and the arc and
-// `sin(x) / x` of `in_f64.rs` shown to the Gappa models' correspondence test
-// of proofs/ (under `kani_kernels`).
+pub(super) mod in_f64;
 #[cfg(desktop64)]
-pub(crate) mod kernels_f64;
-mod slice;
-
-pub(crate) use slice::{slerp_slice_by, Slerped};
+mod lanes;
+pub(super) mod slice;
 
 /// How far the ratio of two squared norms may be from 1 for slerp to treat
 /// the inputs as unit: well above the rounding of f32 unit quaternions
@@ -36,6 +31,26 @@ pub(super) const NEARLY_UNIT: f32 = 1e-6;
 /// 2^-12 rad: below this, `sin(x) / sin(phi)` is `x / phi` to f32's
 /// precision (the two differ by less than `phi^2 / 6`, 2^-26).
 pub(super) const SMALL_ANGLE: f32 = 1.0 / 4096.0;
+
+/// A value that holds a rotation, as the slices read and write it: a
+/// [`Quat`], or a `RigTForm`'s `r`.
+pub(crate) trait WithRotation: Copy {
+    /// The rotation.
+    fn rotation(&self) -> &Quat;
+    /// The rotation, to be written.
+    fn rotation_mut(&mut self) -> &mut Quat;
+}
+
+impl WithRotation for Quat {
+    #[inline(always)]
+    fn rotation(&self) -> &Quat {
+        self
+    }
+    #[inline(always)]
+    fn rotation_mut(&mut self) -> &mut Quat {
+        self
+    }
+}
 
 impl Quat {
     /// Spherical linear interpolation, as the notes define it:

@@ -2,9 +2,9 @@
 //! rotations (`quat/slerp/slice.rs`): the translations, lerped beside them.
 
 use super::RigTForm;
-use crate::quat::{Quat, Slerped};
+use crate::quat::{Quat, Slerped, WithRotation};
 
-impl Slerped for RigTForm {
+impl WithRotation for RigTForm {
     #[inline(always)]
     fn rotation(&self) -> &Quat {
         &self.r
@@ -13,6 +13,9 @@ impl Slerped for RigTForm {
     fn rotation_mut(&mut self) -> &mut Quat {
         &mut self.r
     }
+}
+
+impl Slerped for RigTForm {
     #[inline(always)]
     fn lerp_rest(start: &Self, end: &Self, alpha: f32, out: &mut Self) {
         out.t = start.t.lerp(end.t, alpha);

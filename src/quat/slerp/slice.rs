@@ -2,6 +2,7 @@
 //! systems that blend many bones at once, equal to [`Quat::slerp`] element
 //! by element, bit for bit.
 
+use super::WithRotation;
 use crate::Quat;
 
 impl Quat {
@@ -23,13 +24,12 @@ impl Quat {
     /// time in vector registers:
     ///
     /// - on x86-64, eight (SSE2) or sixteen (AVX) pairs a step, in vector
-    ///   registers written by
-    ///   hand: SSE2's on every target with SSE, AVX's where AVX is enabled
-    ///   at compile time (`-C target-cpu=x86-64-v3`, `-C target-cpu=native`
-    ///   on a processor with AVX, or `-C target-feature=+avx`). On a Zen 3
-    ///   EPYC that is 5.6 ns per pair with SSE2 and 3.3 with AVX, where a
-    ///   loop of the fastest peer's single slerp takes 11.1 and 8.0
-    ///   (`cargo bench -p rigtform-compare --bench ops`, `slerp slice`);
+    ///   registers written by hand: SSE2's on every target with SSE, AVX's
+    ///   where AVX is enabled at compile time (`-C target-cpu=x86-64-v3`,
+    ///   `-C target-cpu=native` on a processor with AVX, or
+    ///   `-C target-feature=+avx`); the performance page
+    ///   (`docs/performance.md`, `slerp slice`) has the times beside a loop
+    ///   of each peer's single slerp;
     /// - on AArch64, blocks of 64 pairs that the compiler vectorizes (the
     ///   square root included: the crate's square root is the processor's
     ///   instruction, through an intrinsic the vectorizer sees), and on
@@ -82,11 +82,7 @@ impl Quat {
 
 /// What [`slerp_slice_by`] interpolates: a value that holds a rotation,
 /// slerped, and maybe more, lerped (`RigTForm`'s translation).
-pub(crate) trait Slerped: Copy {
-    /// The rotation.
-    fn rotation(&self) -> &Quat;
-    /// The rotation, to be written.
-    fn rotation_mut(&mut self) -> &mut Quat;
+pub(crate) trait Slerped: WithRotation {
     /// Writes into `out` all but the rotation of the interpolation of
     /// `start` and `end` by `alpha`.
     fn lerp_rest(start: &Self, end: &Self, alpha: f32, out: &mut Self);
@@ -99,14 +95,6 @@ pub(crate) trait Slerped: Copy {
 }
 
 impl Slerped for Quat {
-    #[inline(always)]
-    fn rotation(&self) -> &Quat {
-        self
-    }
-    #[inline(always)]
-    fn rotation_mut(&mut self) -> &mut Quat {
-        self
-    }
     #[inline(always)]
     fn lerp_rest(_: &Self, _: &Self, _: f32, _: &mut Self) {}
     #[cfg(x86_sse_lanes)]
@@ -123,15 +111,15 @@ impl Slerped for Quat {
 pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, out: &mut [T]) {
     #[cfg(x86_avx_lanes)]
     if alpha > 0.0 && alpha <= 1.0 {
-        return steps::slerp_in_steps::<avx::Avx, T, 2, 4, 16>(starts, ends, alpha, out);
+        return steps::slerp_in_steps::<Avx, T, 2, 4, 16>(starts, ends, alpha, out);
     }
     #[cfg(all(x86_sse_lanes, not(x86_avx_lanes)))]
     if alpha > 0.0 && alpha <= 1.0 {
-        return steps::slerp_in_steps::<sse2::Sse2, T, 2, 4, 8>(starts, ends, alpha, out);
+        return steps::slerp_in_steps::<Sse2, T, 2, 4, 8>(starts, ends, alpha, out);
     }
     #[cfg(portable_lanes)]
     if alpha > 0.0 && alpha <= 1.0 {
-        return lanes::slerp_in_blocks(starts, ends, alpha, out);
+        return blocks::slerp_in_blocks(starts, ends, alpha, out);
     }
     for ((a, b), o) in starts.iter().zip(ends).zip(out.iter_mut()) {
         *o.rotation_mut() = a.rotation().slerp(*b.rotation(), alpha);
@@ -139,24 +127,18 @@ pub(crate) fn slerp_slice_by<T: Slerped>(starts: &[T], ends: &[T], alpha: f32, o
     }
 }
 
-/// Steps of pairs in the vector registers of x86-64, through the
-/// operations of an instruction set, written by hand.
+/// Steps of pairs in the vector registers of x86-64.
 #[cfg(x86_sse_lanes)]
 mod steps;
-
-/// The operations of AVX: sixteen pairs a step.
 #[cfg(x86_avx_lanes)]
-mod avx;
-
-/// The operations of SSE2: eight pairs a step (also compiled for the
-/// tests of AVX builds, which check both).
-#[cfg(all(x86_sse_lanes, any(test, not(x86_avx_lanes))))]
-mod sse2;
+use super::lanes::Avx;
+#[cfg(all(x86_sse_lanes, not(x86_avx_lanes)))]
+use super::lanes::Sse2;
 
 /// The branch-free evaluation of the slice, in blocks the compiler
 /// vectorizes (also compiled for the tests on x86-64, which check it).
 #[cfg(any(portable_lanes, all(test, desktop64)))]
-mod lanes;
+mod blocks;
 
 /// What the tests of every evaluation of the slice in lanes share.
 #[cfg(all(test, desktop64))]

@@ -1,9 +1,9 @@
 //! The branch-free evaluation of the slice, in blocks the compiler
 //! vectorizes.
 
-use super::super::in_f64::{Pair, SMALL_ANGLE_SQUARED_F64};
+use super::super::in_f64::{Arc, Pair};
+use super::super::lanes::{PairLanes, Two};
 use super::{Quat, Slerped};
-use crate::float::select_f64;
 
 /// Pairs per block: the flags of a block live on the stack.
 const BLOCK: usize = 64;
@@ -43,16 +43,11 @@ fn in_plane(a: Quat, b: Quat, alpha: f32) -> (Quat, bool) {
     // lane is not done: its value is replaced by `slerp`'s. Replacing such
     // inputs by finite ones first, select by select, cost a tenth of the
     // time of every lane. No Kani harness runs this path.
-    let mut pair = Pair::of(a, b);
-    let applies = pair.applies();
-    // Unit squared norms and a zero dot product where the evaluation does
-    // not apply (they may be zero or NaN there): no division by zero.
-    pair.n2 = select_f64(applies, pair.n2, 1.0);
-    pair.on2 = select_f64(applies, pair.on2, 1.0);
-    pair.dot = select_f64(applies, pair.dot, 0.0);
-    let arc = pair.arc();
-    let done = applies & (arc.phi_squared > SMALL_ANGLE_SQUARED_F64);
-    (pair.slerp(a, b, arc, alpha), done)
+    let pair = Pair::of_quats(&a, &b);
+    let (near, far) = pair.lengths_in_every_lane();
+    let arc = Arc::from_quotient(near / far);
+    let done = pair.applies() & arc.past_small_angles();
+    (Two::weigh(&a, &b, arc.coefficients(alpha), pair.dot), done)
 }
 
 #[cfg(test)]
