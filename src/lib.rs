@@ -190,7 +190,7 @@
 // `vsqrt.f32` (`fpu_sqrt`) on Arm hard-float targets, `sqrtss` and `fsqrt`
 // (`vector_unit_sqrt`) on x86-64 with SSE and AArch64 with NEON; and on
 // x86-64 with SSE the quaternion product in SSE registers
-// (`by_lanes` in src/quat/ops.rs), the registers of slerp's f64
+// (src/quat/sse2.rs: the Hamilton product and nlerp), the registers of slerp's f64
 // evaluation (src/quat/slerp/lanes/: sse2.rs and sse2/steps.rs, and with
 // AVX avx.rs: one intrinsic per operation) and `lerp_all_components` in
 // src/rigtform/slice.rs, which sees RigTForms as f32s. There the

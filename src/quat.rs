@@ -288,6 +288,18 @@ pub(crate) mod catmull_rom;
 
 mod other_names;
 
+/// The backend of the evaluations that keep a quaternion's components
+/// together (the Hamilton product, `nlerp`): SSE registers on x86-64,
+/// plain f32 elsewhere; the same functions in both, with the same bits.
+#[cfg(x86_sse_lanes)]
+mod sse2;
+#[cfg(x86_sse_lanes)]
+use sse2 as backend;
+#[cfg(any(test, not(x86_sse_lanes)))]
+mod scalar;
+#[cfg(not(x86_sse_lanes))]
+use scalar as backend;
+
 #[cfg(test)]
 mod tests {
     use super::*;

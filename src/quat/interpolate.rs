@@ -3,7 +3,6 @@
 //! Slerp has a folder of its own, `quat/slerp/`.
 
 use super::Quat;
-use crate::float;
 
 impl Quat {
     /// Normalized linear interpolation: aligns the sign of `other` with
@@ -41,28 +40,9 @@ impl Quat {
     #[cfg_attr(desktop64, inline)]
     #[must_use]
     pub fn nlerp(self, other: Self, alpha: f32) -> Self {
-        // The sign goes on `other`, as an exclusive or of its sign bits
-        // with the dot product's (`alpha (-other)` is `-(alpha other)`
-        // exactly): no branch for random pairs to mispredict, and no
-        // multiplication on the way from the dot product to the lerp.
-        // Sums in pairs (the dot product's and the squares'): shorter
-        // chains, and a vector unit adds two halves at once.
-        let pairwise = |a: Self, b: Self| (a.w * b.w + a.y * b.y) + (a.x * b.x + a.z * b.z);
-        let sign = pairwise(self, other).to_bits() & float::SIGN;
-        let other = other.map(|c| f32::from_bits(c.to_bits() ^ sign));
-        let lerp = self.weighted_sum(1.0 - alpha, other, alpha);
-        // Divided by its norm where the sum of squares needs no rescaling
-        // (every unit pair but extreme extrapolation), checked by one
-        // comparison; `normalize` does the rest. Through `normalize` (its
-        // sum in sequence, a second range check before the division) every
-        // call would take about a fifth longer on x86-64 (5.4 against 4.5 ns).
-        let sum = pairwise(lerp, lerp);
-        if float::needs_no_rescaling(sum) {
-            let n = float::sqrt(sum);
-            return lerp.map(|c| c / n);
-        }
-        lerp.normalize()
+        super::backend::nlerp(self, other, alpha)
     }
+
     /// N-way weighted blend: the normalized sum of `weight * q` over the
     /// entries, each `q` first sign-aligned to the first entry's (negated if
     /// its dot product with it is negative). No allocation; the slice may be
