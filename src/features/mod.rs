@@ -4,7 +4,12 @@
 mod impl_approx;
 #[cfg(feature = "bytemuck")]
 mod impl_bytemuck;
-#[cfg(feature = "glam")]
+#[cfg(any(
+    feature = "convert-glam030",
+    feature = "convert-glam032",
+    feature = "convert-glam033",
+    feature = "convert-glam034"
+))]
 mod impl_glam;
 #[cfg(feature = "mint")]
 mod impl_mint;
