@@ -46,6 +46,7 @@ assert!(back.r.angle_to(a.r) < 1e-6);
 /// named `$glam` (a dependency renamed per version: `glam030`, `glam032`,
 /// `glam033`; 0.34 is `glam`), with
 /// their tests; instanced once per glam version, each in its own module.
+#[allow(unused_macros)] // without a glam feature
 macro_rules! glam_conversions {
     ($glam:ident) => {
         use ::$glam as glam;

@@ -4,12 +4,8 @@
 mod impl_approx;
 #[cfg(feature = "bytemuck")]
 mod impl_bytemuck;
-#[cfg(any(
-    feature = "convert-glam030",
-    feature = "convert-glam032",
-    feature = "convert-glam033",
-    feature = "convert-glam034"
-))]
+// Each glam version's module inside has its feature's cfg, which docs.rs
+// shows as that feature's badge.
 mod impl_glam;
 #[cfg(feature = "mint")]
 mod impl_mint;
