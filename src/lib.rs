@@ -167,6 +167,11 @@
 //! | `serde` | `Serialize` and `Deserialize` for every public type, as structs with the Rust field names (a `Quat` is `{x, y, z, w}`); the attitude filter with its whole state, so that a learned gyro bias can be saved and restored |
 //! | `bytemuck` | `Pod` and `Zeroable` for the vectors, `Quat`, `RigTForm`, `Matrix4`, `Smoother`, `FilterParams`, `InertialCalibration` and `MagneticCalibration`: slices cast to bytes without a copy (GPU uploads, wire formats), each type its `f32`s in field order (`Quat` `x, y, z, w`; `Matrix4` column-major). bytemuck's derive writes the `unsafe impl`s after checking `repr(C)`, no padding and `Pod` fields |
 //! | `approx` | `AbsDiffEq`, `RelativeEq` and `UlpsEq` for the vectors, `Quat`, `RigTForm` and `Matrix4`, component by component with `f32`'s defaults, as glam does (`q` and `-q` are one rotation but never component-wise equal: compare rotations with [`Quat::angle_to`]) |
+//! | `convert-glam030` | `From` both ways, exact, between the vectors, `Quat`, `Matrix3`, `Matrix4` and glam 0.30's types (the glam of Bevy 0.17 and 0.18), `RigTForm` to `Affine3A` and back with `TryFrom` (rigid maps only); Rust 1.84 |
+//! | `convert-glam032` | the same with glam 0.32 (Bevy 0.19); Rust 1.84 |
+//! | `convert-glam033` | the same with glam 0.33 (Bevy 0.20); Rust 1.84 |
+//! | `convert-glam034`, or `glam` | the same with glam 0.34; Rust 1.85 (glam 0.34's). `glam` is its first name and stays |
+//! | `nalgebra` | `From` both ways with nalgebra 0.35's types, `RigTForm` to and from `Isometry3`; Rust 1.89 (nalgebra 0.35's) |
 //!
 //! There is no fast-math backend. micromath's approximations of atan2,
 //! sine, cosine and tangent, measured in their place on the emulated
@@ -180,8 +185,9 @@
 //! measured peer on the performance page.
 //!
 //! The library never needs `std`. It builds with Rust 1.84 or newer, with
-//! every feature but `glam` (Rust 1.85, glam 0.34's) and `nalgebra` (Rust
-//! 1.89, nalgebra 0.35's) (`rust-version`, checked in CI).
+//! every feature but `convert-glam034` (alias `glam`: Rust 1.85, glam
+//! 0.34's) and `nalgebra` (Rust 1.89, nalgebra 0.35's) (`rust-version`,
+//! checked in CI, as are those two).
 
 #![cfg_attr(not(test), no_std)]
 #![cfg_attr(docsrs, feature(doc_cfg))]

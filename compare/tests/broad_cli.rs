@@ -1,14 +1,19 @@
 //! The `broad` binary and `tools/vqf_broad.py` on the files a user may
 //! hand them: both read a CSV alike, a trial without a scored sample is an
-//! error, and the script is found at run time.
+//! error, and the scripts are found where the command line says, wherever
+//! the binary was built.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use rigtform_testkit::broad::data::{self, Recording, BROAD_HEADER};
 
+/// The repository's `tools/`, from this crate's folder (the test is built
+/// from the checkout it tests; the binary may be anywhere).
+const TOOLS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tools");
+
 /// A fresh folder outside the repository (so that no `tools/` folder is
-/// above it).
+/// in it).
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("rigtform-broad-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
@@ -16,10 +21,13 @@ fn scratch(name: &str) -> PathBuf {
     dir
 }
 
-fn broad(exe: &Path, args: &[&std::ffi::OsStr]) -> Output {
-    Command::new(exe)
+/// The binary run in `cwd` with `args`, the scripts' variables unset.
+fn broad_in(cwd: &Path, args: &[&std::ffi::OsStr]) -> Output {
+    Command::new(EXE)
         .args(args)
+        .current_dir(cwd)
         .env_remove("RIGTFORM_VQF_SCRIPT")
+        .env_remove("RIGTFORM_FUSION_SCRIPT")
         .output()
         .expect("the binary starts")
 }
@@ -41,7 +49,10 @@ fn trial_without_a_scored_sample_is_an_error() {
     for (name, rows) in [("rest", [still; 3]), ("hidden", [hidden; 3])] {
         let path = dir.join(format!("broad_{name}.csv"));
         std::fs::write(&path, format!("{BROAD_HEADER}\n{}\n", rows.join("\n"))).unwrap();
-        let o = broad(Path::new(EXE), &[path.as_os_str()]);
+        let o = broad_in(
+            &dir,
+            &["--tools".as_ref(), TOOLS.as_ref(), path.as_os_str()],
+        );
         assert_eq!(o.status.code(), Some(1), "{name}: {}", stderr(&o));
         assert!(stderr(&o).contains("no sample is scored"), "{}", stderr(&o));
         let stdout = String::from_utf8_lossy(&o.stdout);
@@ -51,53 +62,61 @@ fn trial_without_a_scored_sample_is_an_error() {
 }
 
 #[test]
-fn script_is_found_at_run_time_next_to_the_binary() {
-    let dir = scratch("moved");
-    let exe = dir.join("broad");
-    std::fs::copy(EXE, &exe).unwrap();
+fn scripts_are_found_in_the_tools_folder_the_command_line_names() {
+    let dir = scratch("tools");
     let trial = dir.join("broad_99.csv");
     std::fs::write(&trial, format!("{BROAD_HEADER}\n{ROW}\n{ROW}\n")).unwrap();
-    // Moved away from the repository, without its script: a message says
-    // where to put it.
-    let o = broad(&exe, &[trial.as_os_str()]);
+    // Run where there is no tools/ folder: the message names the file it
+    // looked for and the options that name another.
+    let o = broad_in(&dir, &[trial.as_os_str()]);
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     let err = stderr(&o);
     assert!(err.contains("cannot find vqf_broad.py"), "{err}");
     assert!(
-        err.contains(&dir.join("vqf_broad.py").display().to_string()),
+        err.contains(
+            &Path::new("tools")
+                .join("vqf_broad.py")
+                .display()
+                .to_string()
+        ),
         "{err}"
     );
-    // A script next to it is the one run: this one, for `sh`, prints the
-    // identity for both of VQF's runs. Fusion's script is looked for the
-    // same way, and the message names it too.
+    assert!(err.contains("--tools DIR"), "{err}");
+    // A tools/ folder in the current folder is the default: this script,
+    // for `sh`, prints the identity for both of VQF's runs. Fusion's
+    // script is looked for in the same folder, and the message names it.
+    let tools = dir.join("tools");
+    std::fs::create_dir(&tools).unwrap();
     let script = "echo w6,x6,y6,z6,w9,x9,y9,z9\nfor i in 1 2; do echo 1,0,0,0,1,0,0,0; done\n";
-    std::fs::write(dir.join("vqf_broad.py"), script).unwrap();
-    let o = broad(
-        &exe,
+    std::fs::write(tools.join("vqf_broad.py"), script).unwrap();
+    let o = broad_in(
+        &dir,
         &["--python".as_ref(), "sh".as_ref(), trial.as_os_str()],
     );
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
     let err = stderr(&o);
     assert!(err.contains("cannot find fusion_broad.py"), "{err}");
-    assert!(
-        err.contains(&dir.join("fusion_broad.py").display().to_string()),
-        "{err}"
-    );
-    std::fs::write(dir.join("fusion_broad.py"), script).unwrap();
-    let o = broad(
-        &exe,
-        &["--python".as_ref(), "sh".as_ref(), trial.as_os_str()],
-    );
-    assert!(o.status.success(), "{}", stderr(&o));
-    let stdout = String::from_utf8_lossy(&o.stdout);
-    assert!(
-        stdout.contains("broad_99.csv: 2 samples, 2 scored"),
-        "{stdout}"
-    );
+    std::fs::write(tools.join("fusion_broad.py"), script).unwrap();
+    // From any other folder, --tools names it.
+    let elsewhere = scratch("elsewhere");
+    for (cwd, args) in [
+        (&dir, vec![]),
+        (&elsewhere, vec!["--tools".as_ref(), tools.as_os_str()]),
+    ] {
+        let mut args: Vec<&std::ffi::OsStr> = args;
+        args.extend(["--python".as_ref(), "sh".as_ref(), trial.as_os_str()]);
+        let o = broad_in(cwd, &args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let stdout = String::from_utf8_lossy(&o.stdout);
+        assert!(
+            stdout.contains("broad_99.csv: 2 samples, 2 scored"),
+            "{stdout}"
+        );
+    }
     // A script named by the flag or the variable must exist.
     let missing = dir.join("nowhere.py");
-    let o = broad(
-        &exe,
+    let o = broad_in(
+        &dir,
         &[
             "--vqf-script".as_ref(),
             missing.as_os_str(),
@@ -110,25 +129,26 @@ fn script_is_found_at_run_time_next_to_the_binary() {
         "{}",
         stderr(&o)
     );
-    let o = Command::new(&exe)
+    let o = Command::new(EXE)
         .arg(&trial)
+        .current_dir(&dir)
         .env("RIGTFORM_VQF_SCRIPT", &missing)
         .output()
         .unwrap();
     assert_eq!(o.status.code(), Some(1));
     assert!(stderr(&o).contains("RIGTFORM_VQF_SCRIPT"), "{}", stderr(&o));
     std::fs::remove_dir_all(&dir).unwrap();
+    std::fs::remove_dir_all(&elsewhere).unwrap();
 }
 
 /// How many samples `tools/vqf_broad.py`'s reader finds in `path`, or its
 /// error.
 fn python_reads(path: &Path) -> Result<usize, String> {
-    let tools = concat!(env!("CARGO_MANIFEST_DIR"), "/../tools");
     let code = "import sys\nsys.path.insert(0, sys.argv[1])\nfrom vqf_broad import read_trial\n\
                 try:\n    print(len(read_trial(sys.argv[2])))\n\
                 except ValueError as e:\n    sys.exit(str(e))\n";
     let o = Command::new("python3")
-        .args(["-c", code, tools])
+        .args(["-c", code, TOOLS])
         .arg(path)
         .output()
         .expect("python3 starts");

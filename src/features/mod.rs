@@ -4,7 +4,8 @@
 mod impl_approx;
 #[cfg(feature = "bytemuck")]
 mod impl_bytemuck;
-#[cfg(feature = "glam")]
+// Each glam version's module inside has its feature's cfg, which docs.rs
+// shows as that feature's badge.
 mod impl_glam;
 #[cfg(feature = "mint")]
 mod impl_mint;

@@ -24,8 +24,8 @@ const QEMU_TIMEOUT: Duration = Duration::from_secs(300);
 pub const EMPTY_OP: &str = "empty";
 
 /// The `embedded/` directory.
-fn embedded() -> PathBuf {
-    tools::root().join("embedded")
+fn embedded() -> Result<PathBuf> {
+    Ok(tools::root()?.join("embedded"))
 }
 
 /// One release build of a binary of `embedded/`.
@@ -56,7 +56,7 @@ impl<'a> Build<'a> {
     /// returns the ELF's path, as cargo reports it.
     pub fn run(&self) -> Result<PathBuf> {
         let mut cmd = tools::cargo();
-        cmd.current_dir(embedded()).args([
+        cmd.current_dir(embedded()?).args([
             "build",
             "--quiet",
             "--release",
@@ -105,7 +105,11 @@ pub fn count(bin: &str, features: Option<&str>) -> Result<Vec<Measured>> {
 pub fn count_at(bin: &str, features: Option<&str>, opt_level: &str) -> Result<Vec<Measured>> {
     count_build(Build {
         env: vec![("CARGO_PROFILE_RELEASE_OPT_LEVEL", opt_level.to_owned())],
-        target_dir: Some(embedded().join("target").join(format!("count-{opt_level}"))),
+        target_dir: Some(
+            embedded()?
+                .join("target")
+                .join(format!("count-{opt_level}")),
+        ),
         ..Build::new(bin, features)
     })
 }
@@ -219,7 +223,7 @@ pub fn flash(llvm_tools: &Path, opt_level: &str, function: &str, features: &str)
             ("RIGTFORM_SIZE_OP", function.to_owned()),
             ("CARGO_PROFILE_RELEASE_OPT_LEVEL", opt_level.to_owned()),
         ],
-        target_dir: Some(embedded().join("target").join(format!("size-{opt_level}"))),
+        target_dir: Some(embedded()?.join("target").join(format!("size-{opt_level}"))),
     };
     let elf = build.run()?;
     let out = tools::stdout_of(Command::new(llvm_tools.join("llvm-size")).arg(&elf))?;

@@ -20,7 +20,7 @@ use crate::tools::{cargo, root, run, say};
 /// Runs the comparison; fails if npm, node or either side fails, or if the
 /// samples differ by more than 1e-6.
 pub fn gltf_check() -> Result<()> {
-    let root = root();
+    let root = root()?;
     let tool = root.join("tools/gltf-check");
     say("npm ci in tools/gltf-check (three.js)");
     run(Command::new("npm")

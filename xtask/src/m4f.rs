@@ -360,7 +360,7 @@ pub fn attitude_section(date: &str) -> Result<String> {
 /// attitude table follows (with each filter's flash); with `write_page`
 /// too, the table goes into the performance page's attitude block.
 pub fn filter_budget(features: Option<&str>, peers: bool, write_page: bool) -> Result<()> {
-    let root = tools::root();
+    let root = tools::root()?;
     let page_path = root.join(PAGE);
     if write_page {
         // Fail now, not after the builds, if the block is not there.

@@ -369,7 +369,7 @@ fn given(p: &Proven) -> &'static str {
 
 /// Runs everything; prints one line per constant and the count.
 pub fn prove_all() -> Result<()> {
-    let root = root();
+    let root = root()?;
     let dir = root.join("proofs/gappa");
     let mut models: Vec<_> = std::fs::read_dir(&dir)
         .with_context(|| format!("{}", dir.display()))?

@@ -26,7 +26,7 @@ use crate::m4f::PAGE;
 /// Runs everything and rewrites the page's block; the page is left as it
 /// was if any step fails.
 pub fn perf_report(draws: u64) -> Result<()> {
-    let root = tools::root();
+    let root = tools::root()?;
     let page_path = root.join(PAGE);
     // Fail now, not after ten minutes, if a block is not there.
     let page_text = std::fs::read_to_string(&page_path)?;
@@ -91,9 +91,10 @@ fn host_table() -> Result<String> {
         say(format!("removing the old results in {}", results.display()));
         std::fs::remove_dir_all(&results)?;
     }
+    let root = tools::root()?;
     let bench = |args: &[&str]| {
         let mut cmd = tools::cargo();
-        cmd.current_dir(tools::root())
+        cmd.current_dir(&root)
             .args(["bench", "-p", COMPARE, "--bench", BENCH]);
         cmd.arg("--").args(args);
         cmd
@@ -121,9 +122,10 @@ fn avx2_table() -> Result<String> {
         say(format!("removing the old results in {}", results.display()));
         std::fs::remove_dir_all(&results)?;
     }
+    let root = tools::root()?;
     let bench = |args: &[&str]| {
         let mut cmd = tools::cargo();
-        cmd.current_dir(tools::root())
+        cmd.current_dir(&root)
             .env("RUSTFLAGS", "-C target-cpu=x86-64-v3")
             .env("CRITERION_HOME", &results)
             .args(["bench", "-p", COMPARE, "--bench", BENCH, "--target-dir"])
@@ -141,7 +143,7 @@ fn avx2_table() -> Result<String> {
 
 /// The workspace's target directory, as cargo says.
 fn target_directory() -> Result<std::path::PathBuf> {
-    let metadata = tools::stdout_of(tools::cargo().current_dir(tools::root()).args([
+    let metadata = tools::stdout_of(tools::cargo().current_dir(tools::root()?).args([
         "metadata",
         "--format-version",
         "1",
@@ -158,7 +160,7 @@ fn target_directory() -> Result<std::path::PathBuf> {
 /// leading comment line.
 fn accuracy(draws: u64) -> Result<String> {
     let mut cmd = tools::cargo();
-    cmd.current_dir(tools::root()).args([
+    cmd.current_dir(tools::root()?).args([
         "run",
         "--quiet",
         "--release",

@@ -5,6 +5,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
+use std::sync::OnceLock;
 
 use anyhow::{bail, Context, Result};
 
@@ -16,12 +17,48 @@ pub fn say(what: impl std::fmt::Display) {
     eprintln!("xtask: {what}");
 }
 
-/// The repository's root (the directory above `xtask/`).
-pub fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
+/// The root of the repository this runs in, found at run time from the
+/// current folder ([`workspace_root_of`]), never from where the xtask was
+/// built: one target folder may serve several checkouts, and cargo then
+/// runs the xtask another checkout built.
+pub fn root() -> Result<PathBuf> {
+    static ROOT: OnceLock<PathBuf> = OnceLock::new();
+    if let Some(root) = ROOT.get() {
+        return Ok(root.clone());
+    }
+    let here = std::env::current_dir().context("cannot read the current folder")?;
+    let root = workspace_root_of(&here)?;
+    Ok(ROOT.get_or_init(|| root).clone())
+}
+
+/// The folder of the cargo workspace that `dir` is in
+/// (`cargo locate-project --workspace`), if it is rigtform's (it has
+/// `xtask/Cargo.toml`).
+pub fn workspace_root_of(dir: &Path) -> Result<PathBuf> {
+    let manifest = stdout_of(cargo().current_dir(dir).args([
+        "locate-project",
+        "--workspace",
+        "--message-format",
+        "plain",
+    ]))
+    .with_context(|| {
+        format!(
+            "{} is in no cargo workspace: run cargo xtask inside the rigtform repository",
+            dir.display()
+        )
+    })?;
+    let root = Path::new(manifest.trim())
         .parent()
-        .expect("xtask/ is inside the repository")
-        .to_path_buf()
+        .with_context(|| format!("cargo named the manifest {manifest:?}"))?;
+    if !root.join("xtask/Cargo.toml").is_file() {
+        bail!(
+            "the workspace of {} ({}) is not rigtform's (it has no xtask/): \
+             run cargo xtask inside the rigtform repository",
+            dir.display(),
+            root.display()
+        );
+    }
+    Ok(root.to_path_buf())
 }
 
 /// The cargo that runs the xtask (`$CARGO`), or the one on the path.
@@ -164,6 +201,29 @@ pub fn one_instruction_per_block(version: (u32, u32)) -> &'static [&'static str]
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_workspace_is_the_one_the_current_folder_is_in() {
+        // Tests run in the crate's folder, xtask/ of this checkout.
+        let here = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let root = workspace_root_of(here).unwrap();
+        assert_eq!(root, here.parent().unwrap());
+        assert_eq!(workspace_root_of(&root.join("src")).unwrap(), root);
+        // A folder in no workspace, and a workspace that is not rigtform's.
+        let outside = tempfile::tempdir().unwrap();
+        let err = workspace_root_of(outside.path()).unwrap_err();
+        assert!(
+            format!("{err:#}").contains("in no cargo workspace"),
+            "{err:#}"
+        );
+        std::fs::write(
+            outside.path().join("Cargo.toml"),
+            "[workspace]\nmembers = []\n",
+        )
+        .unwrap();
+        let err = workspace_root_of(outside.path()).unwrap_err();
+        assert!(format!("{err:#}").contains("is not rigtform's"), "{err:#}");
+    }
 
     #[test]
     fn reads_qemu_versions() {

@@ -3,9 +3,10 @@
 //! attitude filter, eases a displayed attitude towards it with slerp, and
 //! places a sensor mounted on a moving body with `RigTForm`s.
 //!
-//! The samples come from a fixed table, standing in for a sensor driver,
-//! and the results go to `black_box`, standing in for a radio or a
-//! display: the compiler can neither precompute nor drop the work.
+//! The samples come from a fixed table, and the results go to
+//! `black_box`, standing in for a radio or a display: the compiler can
+//! neither precompute nor drop the work. `src/bin/imu_mpu6050.rs` reads a
+//! real sensor instead.
 //!
 //! ```text
 //! cd examples/firmware
@@ -19,6 +20,10 @@
 use core::hint::black_box;
 
 use cortex_m_rt::entry;
+// Built beside the MPU-6050 firmware (feature `microbit-v2`), cortex-m-rt
+// takes its interrupt vectors from the nRF52833's device crate.
+#[cfg(feature = "microbit-v2")]
+use microbit as _;
 use panic_halt as _;
 use rigtform::attitude::{FilterParams, OrientationFilter};
 use rigtform::{Cvec3, Cvec4, Quat, RigTForm};

@@ -42,9 +42,14 @@ struct Args {
     /// and `imufusion` packages).
     #[arg(long, default_value = "python3")]
     python: String,
+    /// The folder that holds `vqf_broad.py` and `fusion_broad.py`: the
+    /// repository's `tools/` (default: `tools` in the current folder, as
+    /// when run from the repository's root).
+    #[arg(long, default_value = "tools")]
+    tools: PathBuf,
     /// The script that runs VQF, `tools/vqf_broad.py` of the repository
     /// (default: the file `RIGTFORM_VQF_SCRIPT` names, else `vqf_broad.py`
-    /// next to the binary, else `tools/vqf_broad.py` in a folder above it).
+    /// in the `--tools` folder).
     #[arg(long)]
     vqf_script: Option<PathBuf>,
     /// The script that runs Fusion, `tools/fusion_broad.py` of the
@@ -149,8 +154,8 @@ fn evaluate(args: &Args) -> Result<(), String> {
         None
     } else {
         Some((
-            pypi::VQF.find_script(args.vqf_script.as_deref())?,
-            pypi::FUSION.find_script(args.fusion_script.as_deref())?,
+            pypi::VQF.find_script(args.vqf_script.as_deref(), &args.tools)?,
+            pypi::FUSION.find_script(args.fusion_script.as_deref(), &args.tools)?,
         ))
     };
     let trials: Vec<Trial> = trials

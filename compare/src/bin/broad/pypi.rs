@@ -44,11 +44,13 @@ pub const FUSION: Peer = Peer {
 };
 
 impl Peer {
-    /// Where the script is, found at run time: `given` (the peer's flag),
-    /// else the file its environment variable names, else the script next
-    /// to the binary, else `tools/<script>` in the folder of the binary or
-    /// one above it (the repository, for a binary under `target/`).
-    pub fn find_script(&self, given: Option<&Path>) -> Result<PathBuf, String> {
+    /// Where the script is: `given` (the peer's flag), else the file its
+    /// environment variable names, else `<tools>/<script>`, where `tools`
+    /// is the `--tools` folder (by default `tools` of the current folder:
+    /// the repository's, when run from its root). Never guessed from where
+    /// the binary is, which says nothing of the checkout (the target folder
+    /// may be anywhere).
+    pub fn find_script(&self, given: Option<&Path>, tools: &Path) -> Result<PathBuf, String> {
         let script = self.script;
         if let Some(path) = given {
             return existing(path.to_path_buf(), self.flag, script);
@@ -56,22 +58,19 @@ impl Peer {
         if let Some(path) = std::env::var_os(self.var) {
             return existing(PathBuf::from(path), self.var, script);
         }
-        let exe = std::env::current_exe().map_err(|e| format!("cannot locate the binary: {e}"))?;
-        let dir = exe.parent().unwrap_or(Path::new("."));
-        let candidates: Vec<PathBuf> = std::iter::once(dir.join(script))
-            .chain(dir.ancestors().map(|d| d.join("tools").join(script)))
-            .collect();
-        candidates.into_iter().find(|p| p.is_file()).ok_or_else(|| {
-            format!(
-                "cannot find {script}, which runs {}: put it next to the binary ({}), \
-                 or name it with {} PATH or {}=PATH \
-                 (it is tools/{script} in the rigtform repository)",
-                self.name,
-                dir.join(script).display(),
-                self.flag,
-                self.var,
-            )
-        })
+        let path = tools.join(script);
+        if path.is_file() {
+            return Ok(path);
+        }
+        Err(format!(
+            "cannot find {script}, which runs {}: {} is not a file; run from the \
+             repository's root, or name its tools/ folder with --tools DIR, or the \
+             script with {} PATH or {}=PATH",
+            self.name,
+            path.display(),
+            self.flag,
+            self.var,
+        ))
     }
 
     /// The peer's 6D and 9D runs over the trial at `path`, scored against
