@@ -10,10 +10,14 @@
 //! performance page's table (docs/performance.md) divides its median by
 //! 1,024.
 //!
-//! The two plain-loop benchmarks (`slerp, plain loop`, `RigTForm
-//! interpolate, plain loop`) time the single call as a user's loop calls it:
-//! over a `Vec` of pairs, a different `alpha` for each, the results stored
-//! in an output `Vec` (hidden behind `black_box` once per pass, not per call).
+//! The plain-loop benchmarks (`slerp`, `RigTForm interpolate`, `nlerp` and
+//! `q*q`, each `, plain loop`) time the single call as a user's loop calls
+//! it: over a `Vec` of pairs, a different `alpha` for each, the results
+//! stored in an output `Vec` (hidden behind `black_box` once per pass, not
+//! per call). The same four `, through memory` pass each quaternion or
+//! transform through `black_box` on its way to the call: stored and loaded
+//! back, as a value passed by value to a function that is not inlined is
+//! (a 28-byte `RigTForm` goes by memory in the x86-64 ABI).
 //!
 //! The two slice benchmarks (`slerp slice`, `RigTForm interpolate slice`)
 //! time rigtform's slice APIs over all 1,024 pairs with one `alpha` against
@@ -324,6 +328,57 @@ macro_rules! glam_benches {
             ($glam::Vec3::ZERO, $glam::Quat::IDENTITY),
             |((t1, r1), (t2, r2), a)| (t1.lerp(t2, a), r1.slerp(r2, a)),
         );
+        run_loop(
+            $c,
+            "slerp, through memory",
+            name,
+            &p.qqa,
+            $glam::Quat::IDENTITY,
+            |(a, b, t)| black_box(a).slerp(black_box(b), t),
+        );
+        run_loop(
+            $c,
+            "RigTForm interpolate, through memory",
+            name,
+            &p.tfa,
+            ($glam::Vec3::ZERO, $glam::Quat::IDENTITY),
+            |(a, b, t)| {
+                let ((t1, r1), (t2, r2)) = (black_box(a), black_box(b));
+                (t1.lerp(t2, t), r1.slerp(r2, t))
+            },
+        );
+        run_loop(
+            $c,
+            "nlerp, plain loop",
+            name,
+            &p.qqa,
+            $glam::Quat::IDENTITY,
+            |(a, b, t)| a.lerp(b, t),
+        );
+        run_loop(
+            $c,
+            "nlerp, through memory",
+            name,
+            &p.qqa,
+            $glam::Quat::IDENTITY,
+            |(a, b, t)| black_box(a).lerp(black_box(b), t),
+        );
+        run_loop(
+            $c,
+            "q*q, plain loop",
+            name,
+            &p.qq,
+            $glam::Quat::IDENTITY,
+            |(a, b)| a * b,
+        );
+        run_loop(
+            $c,
+            "q*q, through memory",
+            name,
+            &p.qq,
+            $glam::Quat::IDENTITY,
+            |(a, b)| black_box(a) * black_box(b),
+        );
         run_slice(
             $c,
             "slerp slice",
@@ -433,6 +488,54 @@ fn quat_ops(c: &mut Criterion) {
             RigTForm::IDENTITY,
             |(a, b, t)| a.interpolate(b, t),
         );
+        run_loop(
+            jobs,
+            "slerp, through memory",
+            name,
+            &p.qqa,
+            Quat::IDENTITY,
+            |(a, b, t)| black_box(a).slerp(black_box(b), t),
+        );
+        run_loop(
+            jobs,
+            "RigTForm interpolate, through memory",
+            name,
+            &p.tfa,
+            RigTForm::IDENTITY,
+            |(a, b, t)| black_box(a).interpolate(black_box(b), t),
+        );
+        run_loop(
+            jobs,
+            "nlerp, plain loop",
+            name,
+            &p.qqa,
+            Quat::IDENTITY,
+            |(a, b, t)| a.nlerp(b, t),
+        );
+        run_loop(
+            jobs,
+            "nlerp, through memory",
+            name,
+            &p.qqa,
+            Quat::IDENTITY,
+            |(a, b, t)| black_box(a).nlerp(black_box(b), t),
+        );
+        run_loop(
+            jobs,
+            "q*q, plain loop",
+            name,
+            &p.qq,
+            Quat::IDENTITY,
+            |(a, b)| a * b,
+        );
+        run_loop(
+            jobs,
+            "q*q, through memory",
+            name,
+            &p.qq,
+            Quat::IDENTITY,
+            |(a, b)| black_box(a) * black_box(b),
+        );
         run_slice(
             jobs,
             "slerp slice",
@@ -464,7 +567,7 @@ fn quat_ops(c: &mut Criterion) {
 /// The operations, in the order they are run and tabulated (`cargo xtask
 /// perf-report` takes the performance page's rows in the order `--list` prints
 /// them).
-const OPS: [&str; 23] = [
+const OPS: [&str; 29] = [
     "q*q",
     "q*q renormalized",
     "rotate Cvec3",
@@ -484,6 +587,12 @@ const OPS: [&str; 23] = [
     "RigTForm interpolate",
     "slerp, plain loop",
     "RigTForm interpolate, plain loop",
+    "slerp, through memory",
+    "RigTForm interpolate, through memory",
+    "nlerp, plain loop",
+    "nlerp, through memory",
+    "q*q, plain loop",
+    "q*q, through memory",
     "slerp slice",
     "RigTForm interpolate slice",
     "Matrix4 from RigTForm",
@@ -551,6 +660,54 @@ fn peers(jobs: &mut Vec<Job>, inp: &Inputs) {
             &p.tfa,
             nalgebra::Isometry3::identity(),
             |(a, b, t)| a.lerp_slerp(&b, t),
+        );
+        run_loop(
+            jobs,
+            "slerp, through memory",
+            name,
+            &p.qqa,
+            nalgebra::UnitQuaternion::identity(),
+            |(a, b, t)| black_box(a).slerp(&black_box(b), t),
+        );
+        run_loop(
+            jobs,
+            "RigTForm interpolate, through memory",
+            name,
+            &p.tfa,
+            nalgebra::Isometry3::identity(),
+            |(a, b, t)| black_box(a).lerp_slerp(&black_box(b), t),
+        );
+        run_loop(
+            jobs,
+            "nlerp, plain loop",
+            name,
+            &p.qqa,
+            nalgebra::UnitQuaternion::identity(),
+            |(a, b, t)| a.nlerp(&b, t),
+        );
+        run_loop(
+            jobs,
+            "nlerp, through memory",
+            name,
+            &p.qqa,
+            nalgebra::UnitQuaternion::identity(),
+            |(a, b, t)| black_box(a).nlerp(&black_box(b), t),
+        );
+        run_loop(
+            jobs,
+            "q*q, plain loop",
+            name,
+            &p.qq,
+            nalgebra::UnitQuaternion::identity(),
+            |(a, b)| a * b,
+        );
+        run_loop(
+            jobs,
+            "q*q, through memory",
+            name,
+            &p.qq,
+            nalgebra::UnitQuaternion::identity(),
+            |(a, b)| black_box(a) * black_box(b),
         );
         run_slice(
             jobs,
