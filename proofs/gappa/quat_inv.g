@@ -14,8 +14,8 @@
 # rounding errors. (The correspondence test checks the x component's zero;
 # Gappa does not.)
 #
-#! law - 5.4e-7 real part of q * q.inv() - 1 for |q|^2 within 2^-22 of 1
-#! law - 1b-22 each vector component of q * q.inv()
+#! law - pw - 1 in [-5.4e-7, 5.4e-7] real part of q * q.inv() - 1 for |q|^2 within 2^-22 of 1
+#! law - py in [-1b-22, 1b-22] each vector component of q * q.inv()
 @rnd = float<ieee_32, ne>;
 
 w = rnd(W); x = rnd(X); y = rnd(Y); z = rnd(Z);
