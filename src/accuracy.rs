@@ -24,6 +24,11 @@
 //! - **measured**: the largest error over random draws, rounded up. Where a
 //!   model proves a looser bound for the same quantity, the doc gives it.
 //!
+//! Four constants are not error bounds and are counted apart:
+//! [`IS_NORMALIZED_TOLERANCE`] and [`RIGID_TOLERANCE`] are **tolerances**
+//! (chosen from measured errors), and the two BROAD RMSE figures are
+//! **benchmark** figures (the filter on one recording).
+//!
 //! Angles are radians; "angle error" is the angle of the rotation between the
 //! computed and the exact result (compared up to sign, as rotations).
 //!
@@ -228,8 +233,8 @@ pub const RENORMALIZED_CHAIN_NORM_ERROR: f32 = 1.5e-7; // 1.192e-7 (plain produc
 /// rotating by such a quaternion scales vectors by less than 0.02 %. The check compares the squared norm with 1 within
 /// twice this value.
 ///
-/// Known: measured: a tolerance chosen from the measured [`UNIT_NORM_ERROR`],
-/// not itself an error bound.
+/// Known: tolerance: chosen from the measured [`UNIT_NORM_ERROR`], not
+/// itself an error bound.
 pub const IS_NORMALIZED_TOLERANCE: f32 = backend::IS_NORMALIZED_TOLERANCE;
 /// How far from rigid a matrix may be for
 /// [`RigTForm::try_from`](crate::RigTForm#impl-TryFrom%3CMatrix4%3E-for-RigTForm)
@@ -240,8 +245,8 @@ pub const IS_NORMALIZED_TOLERANCE: f32 = backend::IS_NORMALIZED_TOLERANCE;
 /// makes, so that products of a few such matrices pass, while a scale of
 /// 1.001 or a shear of 0.001 is refused.
 ///
-/// Known: measured: a tolerance chosen from the measured orthonormality
-/// error of the matrices above, not an error bound.
+/// Known: tolerance: chosen from the measured orthonormality error of the
+/// matrices above, not an error bound.
 pub const RIGID_TOLERANCE: f32 = 1e-4;
 /// Angle error of [`Quat::from_matrix`](crate::Quat::from_matrix) for the
 /// f32 rotation matrices of random unit quaternions, against the exact
@@ -332,12 +337,13 @@ pub const SMOOTHER_DECAY_MAX_ERROR: f32 = backend::SMOOTHER_DECAY_MAX_ERROR;
 /// 16 (fast translation), shipped in `testkit/data/` and run by
 /// `tests/broad.rs`: the measured RMSE rounded up.
 ///
-/// Known: measured on the recorded trial, rounded up.
+/// Known: benchmark: measured on the recorded trial, rounded up; a figure
+/// of the filter on one recording, not an error bound of the arithmetic.
 pub const FILTER_BROAD_16_INCLINATION_RMSE_DEG: f32 = 0.6; // 0.526 6D and 9D
 /// Bound on the 9D total RMSE, in degrees, of the same run with the
 /// magnetometer.
 ///
-/// Known: measured on the recorded trial, rounded up.
+/// Known: benchmark: measured on the recorded trial, rounded up.
 pub const FILTER_BROAD_16_TOTAL_RMSE_DEG: f32 = 0.7; // 0.687
 /// Angle error of `a.slerp(b, alpha)` for unit inputs, in the same form as
 /// [`POW_MAX_ANGLE_ERROR`]: at most `SLERP_MAX_ANGLE_ERROR * max(1, |alpha| theta)`

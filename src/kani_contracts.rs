@@ -24,16 +24,16 @@ use crate::{Cvec3, Quat, RigTForm};
 /// `proofs/gappa/normalize.g` (and `normalize_scale.g` for the rescaled
 /// branches, which scale exactly or within 2^-150 and then compute the
 /// same).
-pub const NORMALIZE_NORM_PROVEN: f64 = 8.05e-7;
+pub const NORMALIZE_NORM_PROVEN: f64 = 3.88e-7;
 /// The length of the error vector of the product of two quaternions with
-/// components in [-1, 1] against the exact product of the same f32
-/// inputs: `proofs/gappa/mul.g`.
-pub const MUL_ERROR_PROVEN: f64 = 8.35e-7;
+/// components in [-1, 1] and squared norms within 2^-20 of 1 against the
+/// exact product of the same f32 inputs: `proofs/gappa/mul.g`.
+pub const MUL_ERROR_PROVEN: f64 = 7.16e-7;
 /// The length of the error vector of `q * v` against the exact value of
 /// the same formula, relative to `|v|`, for `q` with components in
-/// [-1, 1] and `v` with components in [-1, 1] and `|v| >= 1/2`:
-/// `proofs/gappa/rotate.g`.
-pub const ROTATE_ERROR_PROVEN: f64 = 7.03e-6;
+/// [-1, 1] and `|q|^2` within 2^-20 of 1, and `v` with components in
+/// [-1, 1] and `|v| >= 1/2`: `proofs/gappa/rotate.g`.
+pub const ROTATE_ERROR_PROVEN: f64 = 3.8e-6;
 
 /// How far from 1 the norm of a quaternion that the contracts call unit
 /// may be: what [`Quat::normalize`] guarantees ([`NORMALIZE_NORM_PROVEN`]),
