@@ -560,6 +560,26 @@ fn product_with_the_inverse_is_quat_inv_g() {
     }
 }
 
+/// inv_inv.g: negating twice, on raw bit patterns too (the model's
+/// roundings of a negation are exact, as the code's sign flips are).
+#[test]
+fn inverse_of_the_inverse_is_inv_inv_g() {
+    let Some(m) = model("inv_inv", Code::F32) else {
+        return;
+    };
+    assert_eq!(m.inputs, ["x", "y", "z"]);
+    for (_, mut d) in draws() {
+        let v: [f32; 3] = core::array::from_fn(|_| component(&mut d));
+        let q = Quat::from_xyzw(v[0], v[1], v[2], d.f32_mixed());
+        let back = q.inv().inv();
+        let out = m.run(&v.map(f64::from));
+        for (name, c) in [("iix", back.x), ("iiy", back.y), ("iiz", back.z)] {
+            check(&m, &out, name, c, &v);
+        }
+        assert_eq!(back.w.to_bits(), q.w.to_bits());
+    }
+}
+
 #[test]
 fn rig_tform_inverse_identities_are_rigtform_inv_g() {
     let Some(m) = model("rigtform_inv", Code::F32) else {
