@@ -14,6 +14,15 @@
 # within 3.4e-8 of phi2 >= 2^-24; Pos = phi / sin(phi) is in [1, 1.5709]
 # for phi up to 2 atan(sqrt(1.0001)); ScS = sin(x) / x is in [2 / pi, 1]
 # for x up to pi / 2.
+# The side conditions' factorizations (`#! side`, used only by the model of
+# the side conditions, without the hints above): Gappa prints the
+# denominators it assumed nonzero expanded in alpha, where interval
+# arithmetic loses that (1 - alpha)^2 Phi2 and (1 - alpha) Pos ScS are
+# positive and that the last is 2^70 GS. Gappa checks each as a polynomial
+# identity, assuming nothing nonzero.
+#! side (Phi2) - 2 * (alpha) * (Phi2) + ((alpha) * (alpha)) * (Phi2) -> (1 - alpha) * (1 - alpha) * Phi2;
+#! side -(alpha) * (Pos) * (ScS) + (Pos) * (ScS) -> (1 - alpha) * Pos * ScS;
+#! side 1403223072318631296 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2)) - 172276317360332136 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) - 233870512053105216 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2)) + 86138158680166068 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) - 24610902480047448 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) + 3076362810005931 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) + 393530372211674972160 * (alpha) * (Phi2) - 39351792740372488192 * (alpha) * ((Phi2) * (Phi2)) + 1403223072318631296 * (alpha) * ((Phi2) * (Phi2) * (Phi2)) + 1180591620717411303424 - 24610902480047448 * (alpha) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) - 196765186105837486080 * ((alpha) * (alpha)) * (Phi2) + 59027689110558732288 * ((alpha) * (alpha)) * ((Phi2) * (Phi2)) - 3508057680796578240 * ((alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2)) + 86138158680166068 * ((alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) - 39351792740372488192 * ((alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2)) + 4677410241062104320 * ((alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2)) - 172276317360332136 * ((alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) - 196765186105837486080 * (Phi2) + 9837948185093122048 * ((alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2)) + 9837948185093122048 * ((Phi2) * (Phi2)) - 233870512053105216 * ((Phi2) * (Phi2) * (Phi2)) - 3508057680796578240 * ((alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2)) + 215345396700415170 * ((alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) + 3076362810005931 * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) -> 1180591620717411303424 * GS;
 @rnd = float<ieee_64, ne>;
 @f32 = float<ieee_32, ne>;
 

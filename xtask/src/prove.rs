@@ -117,6 +117,9 @@ fn claims(path: &Path, text: &str) -> Result<(Vec<Claim>, SollyaScripts)> {
     let mut sollya = Vec::new();
     for line in text.lines().filter_map(|l| l.strip_prefix("#!")) {
         let kind = line.split_whitespace().next().unwrap_or("");
+        if kind == "side" {
+            continue;
+        }
         if kind == "sollya" {
             let words: Vec<&str> = line.split_whitespace().collect();
             let (file, value) = (
@@ -291,6 +294,13 @@ fn prove(path: &Path, work: &Path) -> Result<Proven> {
         let side_path = work.join(format!("{stem}_side.g"));
         std::fs::write(&side_path, &side).with_context(|| format!("{}", side_path.display()))?;
         let (ok, side_script, side_messages) = run_gappa(&side_path)?;
+        let assumed = checks::assumed_nonzero(&side_messages);
+        if !assumed.is_empty() {
+            bail!(
+                "{stem}: the side conditions' own hints (`#! side`) assume these nonzero:\n  {}",
+                assumed.join("\n  ")
+            );
+        }
         if !ok || side_messages.contains("Error") {
             bail!(
                 "{stem}: Gappa assumed these nonzero to check the hints, and no proof without the hints shows it:\n  {}\n{}",

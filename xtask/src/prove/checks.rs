@@ -181,11 +181,24 @@ pub fn side_condition_model(model: &str, conditions: &[String]) -> Result<String
         .lines()
         .filter(|l| l.trim_start().starts_with('$'))
         .collect();
+    // Factorizations the model gives for its side conditions (`#! side`
+    // lines): Gappa sees denominators expanded, where interval arithmetic
+    // loses that `(1 - a)^2 p` is positive. The caller checks that these
+    // hints assume nothing nonzero themselves.
+    let side_hints: Vec<&str> = model
+        .lines()
+        .filter_map(|l| l.strip_prefix("#! side "))
+        .map(str::trim)
+        .collect();
     let goals: Vec<String> = conditions.iter().map(|c| format!("{c} <> 0")).collect();
+    let mut tail = splits.join("\n");
+    for h in side_hints {
+        tail.push('\n');
+        tail.push_str(h);
+    }
     Ok(format!(
-        "{head}{{ {hypotheses}\n  ->\n  {}\n}}\n{}\n",
+        "{head}{{ {hypotheses}\n  ->\n  {}\n}}\n{tail}\n",
         goals.join(" /\\\n  "),
-        splits.join("\n")
     ))
 }
 
