@@ -1,4 +1,4 @@
-# The Hamilton product a * b (src/quat/product.rs: by_formula, and by_lanes,
+# The Hamilton product a * b (src/quat/scalar.rs: hamilton, and src/quat/sse2.rs,
 # which sums the same terms in the same order). f32, round to nearest even,
 # every operation rounded, each component summed left to right.
 #

@@ -1,5 +1,5 @@
 # q * q.inv() (src/quat.rs: inv is [w, -x, -y, -z], exact; the product is
-# src/quat/product.rs's). f32, round to nearest even.
+# src/quat/scalar.rs and src/quat/sse2.rs). f32, round to nearest even.
 #
 # The real part is w w - x (-x) - y (-y) - z (-z), left to right: the sum
 # of the four squares. Domain: every component in [-1, 1] and the exact
