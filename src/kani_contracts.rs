@@ -24,16 +24,16 @@ use crate::{Cvec3, Quat, RigTForm};
 /// `proofs/gappa/normalize.g` (and `normalize_scale.g` for the rescaled
 /// branches, which scale exactly or within 2^-150 and then compute the
 /// same).
-pub const NORMALIZE_NORM_PROVEN: f64 = 8.05e-7;
+pub const NORMALIZE_NORM_PROVEN: f64 = 3.88e-7;
 /// The length of the error vector of the product of two quaternions with
-/// components in [-1, 1] against the exact product of the same f32
-/// inputs: `proofs/gappa/mul.g`.
-pub const MUL_ERROR_PROVEN: f64 = 8.35e-7;
+/// components in [-1, 1] and squared norms within 2^-20 of 1 against the
+/// exact product of the same f32 inputs: `proofs/gappa/mul.g`.
+pub const MUL_ERROR_PROVEN: f64 = 7.16e-7;
 /// The length of the error vector of `q * v` against the exact value of
 /// the same formula, relative to `|v|`, for `q` with components in
-/// [-1, 1] and `v` with components in [-1, 1] and `|v| >= 1/2`:
-/// `proofs/gappa/rotate.g`.
-pub const ROTATE_ERROR_PROVEN: f64 = 7.03e-6;
+/// [-1, 1] and `|q|^2` within 2^-20 of 1, and `v` with components in
+/// [-1, 1] and `|v| >= 1/2`: `proofs/gappa/rotate.g`.
+pub const ROTATE_ERROR_PROVEN: f64 = 3.8e-6;
 
 /// How far from 1 the norm of a quaternion that the contracts call unit
 /// may be: what [`Quat::normalize`] guarantees ([`NORMALIZE_NORM_PROVEN`]),
@@ -274,11 +274,62 @@ impl kani::Arbitrary for RigTForm {
     }
 }
 
-/// The harnesses of the contracts: each calls its operation on
-/// unconstrained inputs, which the contract's `requires` restricts (Kani
-/// assumes it), and Kani checks its `ensures`, and that nothing on the way
-/// panics or makes a NaN. Then `#[kani::stub_verified(..)]` may replace
-/// the operation by its contract in a firmware's harness.
+/// Any value of `T` as its bits may lie, NaN, infinite and subnormal
+/// components included: `kani::any::<RawBits<Quat>>().0` is any four f32
+/// bit patterns, unit or not. For firmware that must reason about corrupted
+/// state (a quaternion read back from flash, a message off a bus), beside
+/// `Quat`'s own `Arbitrary`, which is unit.
+#[cfg(kani)]
+#[derive(Clone, Copy, Debug)]
+pub struct RawBits<T>(pub T);
+
+#[cfg(kani)]
+fn any_bits() -> f32 {
+    f32::from_bits(kani::any())
+}
+
+#[cfg(kani)]
+impl kani::Arbitrary for RawBits<Quat> {
+    fn any() -> Self {
+        Self(Quat::from_xyzw(
+            any_bits(),
+            any_bits(),
+            any_bits(),
+            any_bits(),
+        ))
+    }
+}
+
+#[cfg(kani)]
+impl kani::Arbitrary for RawBits<Cvec3> {
+    fn any() -> Self {
+        Self(Cvec3::new(any_bits(), any_bits(), any_bits()))
+    }
+}
+
+#[cfg(kani)]
+impl kani::Arbitrary for RawBits<RigTForm> {
+    fn any() -> Self {
+        let (t, r): (RawBits<Cvec3>, RawBits<Quat>) = (kani::any(), kani::any());
+        Self(RigTForm::new(t.0, r.0))
+    }
+}
+
+/// The harnesses of the contracts: each calls its operation on inputs
+/// that the contract's `requires` restricts (Kani assumes it), and Kani
+/// checks its `ensures`, and that nothing on the way panics or makes a NaN.
+/// Then `#[kani::stub_verified(..)]` may replace the operation by its
+/// contract in a firmware's harness.
+///
+/// As the project's own harnesses (`proofs/src/harnesses.rs`), each is
+/// split by exponent range: every symbolic component is built from a sign,
+/// a mantissa and an exponent in a fixed range, so that the solver meets
+/// one range of binades at a time (a fully symbolic f32 product is
+/// several thousand clauses per bit of the exponent's spread). The ranges
+/// of a contract's harnesses together cover every input its `requires`
+/// admits: for quaternions in the unit box, exponents -127 (zero and the
+/// subnormals) to 0; for vectors within 2^60, -127 to 60; for `normalize`,
+/// its three branches (scaled up, unscaled, scaled down).
 ///
 /// Written for `cargo kani -p rigtform -Z function-contracts`; not run
 /// here (Kani is not installable on the machines this crate is developed
@@ -287,63 +338,117 @@ impl kani::Arbitrary for RigTForm {
 mod contract_harnesses {
     use crate::{Cvec3, Quat, RigTForm};
 
-    fn any_quat() -> Quat {
-        Quat::from_xyzw(kani::any(), kani::any(), kani::any(), kani::any())
+    /// Any f32 of either sign with magnitude in `[2^lo, 2^(hi + 1))`,
+    /// built from bits (a biased exponent of 0, `lo = -127`, gives zero
+    /// and the subnormals).
+    fn any_with_exponent_in(lo: i32, hi: i32) -> f32 {
+        let sign_and_mantissa: u32 = kani::any::<u32>() & 0x807f_ffff;
+        let span = u32::try_from(hi - lo + 1).unwrap_or(1);
+        let biased = u32::try_from(lo + 127).unwrap_or(0) + kani::any::<u32>() % span;
+        f32::from_bits(sign_and_mantissa | (biased << 23))
     }
 
-    fn any_vec() -> Cvec3 {
-        Cvec3::new(kani::any(), kani::any(), kani::any())
+    fn quat_in(lo: i32, hi: i32) -> Quat {
+        let c = || any_with_exponent_in(lo, hi);
+        Quat::from_xyzw(c(), c(), c(), c())
     }
 
-    fn any_rig_tform() -> RigTForm {
-        RigTForm::new(any_vec(), any_quat())
+    fn vec_in(lo: i32, hi: i32) -> Cvec3 {
+        let c = || any_with_exponent_in(lo, hi);
+        Cvec3::new(c(), c(), c())
+    }
+
+    /// The exponent ranges of a quaternion in the unit box: tiny
+    /// components (where products go subnormal), and the rest.
+    const UNIT_BOX: [(i32, i32); 2] = [(-127, -21), (-20, 0)];
+    /// The exponent ranges of a vector within 2^60.
+    const BOUNDED: [(i32, i32); 3] = [(-127, -21), (-20, 20), (21, 60)];
+
+    #[kani::solver(cadical)]
+    #[kani::proof_for_contract(Quat::mul_quat)]
+    fn quat_product_small() {
+        let _ = quat_in(UNIT_BOX[0].0, UNIT_BOX[0].1).mul_quat(quat_in(-127, 0));
     }
 
     #[kani::solver(cadical)]
     #[kani::proof_for_contract(Quat::mul_quat)]
-    fn quat_product() {
-        let _ = any_quat().mul_quat(any_quat());
+    fn quat_product_moderate() {
+        let _ = quat_in(UNIT_BOX[1].0, UNIT_BOX[1].1).mul_quat(quat_in(-127, 0));
     }
 
     #[kani::solver(cadical)]
     #[kani::proof_for_contract(Quat::normalize)]
-    fn quat_normalize() {
-        let _ = any_quat().normalize();
+    fn quat_normalize_scaled_up() {
+        let _ = quat_in(-127, -51).normalize();
+    }
+
+    #[kani::solver(cadical)]
+    #[kani::proof_for_contract(Quat::normalize)]
+    fn quat_normalize_unscaled() {
+        let _ = quat_in(-50, 62).normalize();
+    }
+
+    #[kani::solver(cadical)]
+    #[kani::proof_for_contract(Quat::normalize)]
+    fn quat_normalize_scaled_down() {
+        let _ = quat_in(63, 127).normalize();
     }
 
     #[kani::solver(cadical)]
     #[kani::proof_for_contract(Quat::inv)]
     fn quat_inv() {
-        let _ = any_quat().inv();
+        let q: super::RawBits<Quat> = kani::any();
+        let _ = q.0.inv();
     }
 
     #[kani::solver(cadical)]
     #[kani::proof_for_contract(Quat::mul_vec3)]
-    fn quat_rotates_a_vector() {
-        let _ = any_quat().mul_vec3(any_vec());
+    fn quat_rotates_a_small_vector() {
+        let _ = quat_in(-127, 0).mul_vec3(vec_in(BOUNDED[0].0, BOUNDED[0].1));
+    }
+
+    #[kani::solver(cadical)]
+    #[kani::proof_for_contract(Quat::mul_vec3)]
+    fn quat_rotates_a_moderate_vector() {
+        let _ = quat_in(-127, 0).mul_vec3(vec_in(BOUNDED[1].0, BOUNDED[1].1));
+    }
+
+    #[kani::solver(cadical)]
+    #[kani::proof_for_contract(Quat::mul_vec3)]
+    fn quat_rotates_a_large_vector() {
+        let _ = quat_in(-127, 0).mul_vec3(vec_in(BOUNDED[2].0, BOUNDED[2].1));
     }
 
     #[kani::solver(cadical)]
     #[kani::proof_for_contract(Quat::slerp)]
     fn quat_slerp() {
-        let _ = any_quat().slerp(any_quat(), kani::any());
+        let _ = quat_in(-127, 0).slerp(quat_in(-127, 0), any_with_exponent_in(-127, 0));
     }
 
     #[kani::solver(cadical)]
     #[kani::proof_for_contract(RigTForm::inv)]
     fn rig_tform_inv() {
-        let _ = any_rig_tform().inv();
+        let _ = RigTForm::new(vec_in(-127, 60), quat_in(-127, 0)).inv();
     }
 
     #[kani::solver(cadical)]
     #[kani::proof_for_contract(RigTForm::mul_rig_tform)]
     fn rig_tform_product() {
-        let _ = any_rig_tform().mul_rig_tform(any_rig_tform());
+        let a = RigTForm::new(vec_in(-127, 60), quat_in(-127, 0));
+        let _ = a.mul_rig_tform(RigTForm::new(vec_in(-127, 60), quat_in(-127, 0)));
     }
 
     #[kani::solver(cadical)]
     #[kani::proof_for_contract(RigTForm::transform_point)]
     fn rig_tform_transform_point() {
-        let _ = any_rig_tform().transform_point(any_vec());
+        let a = RigTForm::new(vec_in(-127, 60), quat_in(-127, 0));
+        let _ = a.transform_point(vec_in(-127, 60));
+    }
+
+    /// `RawBits` reaches NaN components (a cover, not a proof).
+    #[kani::proof]
+    fn raw_bits_reach_nan() {
+        let q: super::RawBits<Quat> = kani::any();
+        kani::cover!(q.0.x.is_nan(), "a NaN component");
     }
 }

@@ -31,8 +31,8 @@
 # [0.4, 2.1] (coefficient_f64.g's hypotheses).
 #
 #! sollya atan_f64.sollya 1.6959e-8
-#! bound PHI_SQUARED_F64_MAX_REL_ERROR 3.392e-8 relative error of the arc's phi^2 for its t2
-#! bound PHI_OVER_SINE_F64_MAX_REL_ERROR 1.696e-8 relative error of the arc's phi / sin(phi) for its t2
+#! bound PHI_SQUARED_F64_MAX_REL_ERROR (phi2 - Phi2) / Phi2 in [-3.392e-8, 3.392e-8] relative error of the arc's phi^2 for its t2
+#! bound PHI_OVER_SINE_F64_MAX_REL_ERROR (pos - Pos) / Pos in [-1.696e-8, 1.696e-8] relative error of the arc's phi / sin(phi) for its t2
 @rnd = float<ieee_64, ne>;
 
 t2 = rnd(T2);
@@ -54,7 +54,10 @@ Pos = At * (1 + t2);
 E = (H - At) / At;
 eh = (h - H) / H;
 
-{ t2 in [1b-170, 1.0001] /\ (H - At) / At in [-1.6959e-8, 1.6959e-8]
+# At in [0.785, 1]: atan(x) / x falls from 1 at 0 to 0.78537 at
+# x = sqrt(1.0001) (a property of the arctangent, stated so that At is
+# known to be nonzero where the hints divide by it).
+{ t2 in [1b-170, 1.0001] /\ At in [0.785, 1] /\ (H - At) / At in [-1.6959e-8, 1.6959e-8]
   ->
   (phi2 - Phi2) / Phi2 in [-3.392e-8, 3.392e-8] /\
   (pos - Pos) / Pos in [-1.696e-8, 1.696e-8] /\

@@ -15,7 +15,7 @@
 # shrinks) is not bounded here; Pair::near's doc gives it as measured,
 # 8.5e-9 of near at most where slerp uses it.
 #
-#! law - 1.12e-16 relative rounding error of the arc's quotient t2 for its f64 inputs
+#! law - (t2 - T) / T in [-1.12e-16, 1.12e-16] relative rounding error of the arc's quotient t2 for its f64 inputs
 @rnd = float<ieee_64, ne>;
 
 near = rnd(Near); far = rnd(Far);

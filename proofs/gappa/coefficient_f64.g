@@ -28,7 +28,12 @@
 # a certificate twice as long again. The parts add up to about 4.0e-8.
 #
 #! sollya sinc_f64.sollya 6.0966e-9
-#! bound SLERP_COEFFICIENT_F64_MAX_REL_ERROR 4.09e-8 relative error of slerp's f64 coefficient of b before its rounding to f32
+#! bound SLERP_COEFFICIENT_F64_MAX_REL_ERROR (c - C) / C in [-4.09e-8, 4.09e-8] relative error of slerp's f64 coefficient of b before its rounding to f32
+# The exact values' ranges (properties of the functions, stated so that
+# they are known to be nonzero where the hints divide by them): Phi2 is
+# within 3.4e-8 of phi2 >= 2^-24; Pos = phi / sin(phi) is in [1, 1.5709]
+# for phi up to 2 atan(sqrt(1.0001)); ScS = sin(x) / x is in [2 / pi, 1]
+# for x up to pi / 2.
 @rnd = float<ieee_64, ne>;
 @f32 = float<ieee_32, ne>;
 
@@ -56,7 +61,8 @@ ep = (pos - Pos) / Pos;
 { alpha in [1b-149, 1] /\ phi2 in [1b-24, 2.4676] /\ pos in [0.4, 2.1] /\
   (phi2 - Phi2) / Phi2 in [-3.392e-8, 3.392e-8] /\
   (pos - Pos) / Pos in [-1.696e-8, 1.696e-8] /\
-  (GS - ScS) / ScS in [-6.0966e-9, 6.0966e-9]
+  (GS - ScS) / ScS in [-6.0966e-9, 6.0966e-9] /\
+  Phi2 in [1b-25, 2.4677] /\ Pos in [1, 1.571] /\ ScS in [0.63, 1]
   ->
   (c - C) / C in [-4.09e-8, 4.09e-8]
 }

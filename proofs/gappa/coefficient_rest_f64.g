@@ -8,7 +8,21 @@
 # [2^-149, 1 - 2^-24] (for alpha = 1, rest and c are exactly 0).
 #
 #! sollya sinc_f64.sollya 6.0966e-9
-#! bound SLERP_COEFFICIENT_F64_MAX_REL_ERROR 4.09e-8 relative error of slerp's f64 coefficient of a before its rounding to f32
+#! bound SLERP_COEFFICIENT_F64_MAX_REL_ERROR (c - C) / C in [-4.09e-8, 4.09e-8] relative error of slerp's f64 coefficient of a before its rounding to f32
+# The exact values' ranges (properties of the functions, stated so that
+# they are known to be nonzero where the hints divide by them): Phi2 is
+# within 3.4e-8 of phi2 >= 2^-24; Pos = phi / sin(phi) is in [1, 1.5709]
+# for phi up to 2 atan(sqrt(1.0001)); ScS = sin(x) / x is in [2 / pi, 1]
+# for x up to pi / 2.
+# The side conditions' factorizations (`#! side`, used only by the model of
+# the side conditions, without the hints above): Gappa prints the
+# denominators it assumed nonzero expanded in alpha, where interval
+# arithmetic loses that (1 - alpha)^2 Phi2 and (1 - alpha) Pos ScS are
+# positive and that the last is 2^70 GS. Gappa checks each as a polynomial
+# identity, assuming nothing nonzero.
+#! side (Phi2) - 2 * (alpha) * (Phi2) + ((alpha) * (alpha)) * (Phi2) -> (1 - alpha) * (1 - alpha) * Phi2;
+#! side -(alpha) * (Pos) * (ScS) + (Pos) * (ScS) -> (1 - alpha) * Pos * ScS;
+#! side 1403223072318631296 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2)) - 172276317360332136 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) - 233870512053105216 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2)) + 86138158680166068 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) - 24610902480047448 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) + 3076362810005931 * ((alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) + 393530372211674972160 * (alpha) * (Phi2) - 39351792740372488192 * (alpha) * ((Phi2) * (Phi2)) + 1403223072318631296 * (alpha) * ((Phi2) * (Phi2) * (Phi2)) + 1180591620717411303424 - 24610902480047448 * (alpha) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) - 196765186105837486080 * ((alpha) * (alpha)) * (Phi2) + 59027689110558732288 * ((alpha) * (alpha)) * ((Phi2) * (Phi2)) - 3508057680796578240 * ((alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2)) + 86138158680166068 * ((alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) - 39351792740372488192 * ((alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2)) + 4677410241062104320 * ((alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2)) - 172276317360332136 * ((alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) - 196765186105837486080 * (Phi2) + 9837948185093122048 * ((alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2)) + 9837948185093122048 * ((Phi2) * (Phi2)) - 233870512053105216 * ((Phi2) * (Phi2) * (Phi2)) - 3508057680796578240 * ((alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2)) + 215345396700415170 * ((alpha) * (alpha) * (alpha) * (alpha)) * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) + 3076362810005931 * ((Phi2) * (Phi2) * (Phi2) * (Phi2)) -> 1180591620717411303424 * GS;
 @rnd = float<ieee_64, ne>;
 @f32 = float<ieee_32, ne>;
 
@@ -39,7 +53,8 @@ er = (rest - Rest) / Rest;
 { alpha in [1b-149, 0xffffffp-24] /\ phi2 in [1b-24, 2.4676] /\ pos in [0.4, 2.1] /\
   (phi2 - Phi2) / Phi2 in [-3.392e-8, 3.392e-8] /\
   (pos - Pos) / Pos in [-1.696e-8, 1.696e-8] /\
-  (GS - ScS) / ScS in [-6.0966e-9, 6.0966e-9]
+  (GS - ScS) / ScS in [-6.0966e-9, 6.0966e-9] /\
+  Phi2 in [1b-25, 2.4677] /\ Pos in [1, 1.571] /\ ScS in [0.63, 1]
   ->
   (c - C) / C in [-4.09e-8, 4.09e-8]
 }

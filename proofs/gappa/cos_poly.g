@@ -25,7 +25,7 @@
 # to 1 (1 - 2^-25 ties to even).
 #
 #! sollya cos_poly.sollya 1.28e-10
-#! looser SIN_COS_POLY_MAX_ULP 0.834 cosine polynomial on [0, pi/4], in ulps (the cosine half of the constant's domain; the sine is in the sin_poly_*.g models)
+#! looser SIN_COS_POLY_MAX_ULP (y - Cos) * 16777216 in [-0.834, 0.834] cosine polynomial on [0, pi/4], in ulps (the cosine half of the constant's domain; the sine is in the sin_poly_*.g models)
 @rnd = float<ieee_32, ne>;
 
 r = rnd(R); t = rnd(T);

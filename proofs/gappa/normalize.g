@@ -28,7 +28,7 @@
 # by their squares, average to at most 2^-24; and the sum of squares'
 # 7 2^-24 takes every square and partial sum at its largest together.
 #
-#! looser NORMALIZE_MAX_NORM_ERROR 3.88e-7 |normalize(q)| - 1 (error vector of the quotients plus |N/n - 1|; triangle inequality)
+#! looser NORMALIZE_MAX_NORM_ERROR Deviation in [0, 3.88e-7] |normalize(q)| - 1 (error vector of the quotients plus |N/n - 1|; triangle inequality)
 @rnd = float<ieee_32, ne>;
 
 a = rnd(A); b = rnd(B); c = rnd(C); d = rnd(D);
@@ -39,15 +39,16 @@ ca rnd= a / n; cb rnd= b / n; cc rnd= c / n; cd rnd= d / n;
 
 S = a * a + b * b + c * c + d * d;
 N = sqrt(S);
+Deviation = sqrt((ca - a / n) * (ca - a / n) + (cb - b / n) * (cb - b / n) +
+       (cc - c / n) * (cc - c / n) + (cd - d / n) * (cd - d / n))
+    + |N / n - 1|;
 
 { S in [1, 4] /\ |a| <= 2 /\ |b| <= 2 /\ |c| <= 2 /\ |d| <= 2
   ->
   (s - S) / S in [-7b-24, 7b-24] /\
   (n - N) / N in [-2.69e-7, 2.69e-7] /\
   ca - a / n in [-1b-24, 1b-24] /\
-  sqrt((ca - a / n) * (ca - a / n) + (cb - b / n) * (cb - b / n) +
-       (cc - c / n) * (cc - c / n) + (cd - d / n) * (cd - d / n))
-    + |N / n - 1| in [0, 3.88e-7]
+  Deviation in [0, 3.88e-7]
 }
 
 # The partial sums of squares are at most S.

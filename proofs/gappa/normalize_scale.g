@@ -10,8 +10,8 @@
 # at most 2^-147 of the
 # largest scaled component (at least 2^-3).
 #
-#! law - 0 scaling up by 2^100 is exact
-#! law - 1b-150 scaling down by 2^-66 errs by at most 2^-150
+#! law - up - v * 0x1p100 in [0, 0] scaling up by 2^100 is exact
+#! law - down - v * 0x1p-66 in [-1b-150, 1b-150] scaling down by 2^-66 errs by at most 2^-150
 @rnd = float<ieee_32, ne>;
 
 v = rnd(V);

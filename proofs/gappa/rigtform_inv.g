@@ -15,8 +15,8 @@
 # does not know that the first rotation preserves length, so it lets the
 # intermediate r^-1 t range over a box 27 times wider than |t|.
 #
-#! law - 2.31e-4 |translation of a * a.inv()| / |t| for unit r
-#! law - 2.04e-4 |a.inv().inv().t - t| / |t| for unit r
+#! law - ProductError in [0, 2.31e-4] |translation of a * a.inv()| / |t| for unit r
+#! law - BackError in [0, 2.04e-4] |a.inv().inv().t - t| / |t| for unit r
 @rnd = float<ieee_32, ne>;
 
 w = rnd(W); x = rnd(X); y = rnd(Y); z = rnd(Z);
@@ -53,12 +53,14 @@ BZ = (x * (-IY) - y * (-IX)) * 2;
 GX = ((-IX) + BX * w) + (y * BZ - z * BY);
 GY = ((-IY) + BY * w) + (z * BX - x * BZ);
 GZ = ((-IZ) + BZ * w) + (x * BY - y * BX);
+ProductError = sqrt((ex - (t1 + GX)) * (ex - (t1 + GX)) + (ey - (t2 + GY)) * (ey - (t2 + GY)) + (ez - (t3 + GZ)) * (ez - (t3 + GZ)))
+    / sqrt(t1 * t1 + t2 * t2 + t3 * t3);
+BackError = sqrt((gx - GX) * (gx - GX) + (gy - GY) * (gy - GY) + (gz - GZ) * (gz - GZ))
+    / sqrt(t1 * t1 + t2 * t2 + t3 * t3);
 
 { |w| <= 1 /\ |x| <= 1 /\ |y| <= 1 /\ |z| <= 1 /\
   |t1| <= 1 /\ |t2| <= 1 /\ |t3| <= 1 /\ t1 * t1 + t2 * t2 + t3 * t3 >= 0.25
   ->
-  sqrt((ex - (t1 + GX)) * (ex - (t1 + GX)) + (ey - (t2 + GY)) * (ey - (t2 + GY)) + (ez - (t3 + GZ)) * (ez - (t3 + GZ)))
-    / sqrt(t1 * t1 + t2 * t2 + t3 * t3) in [0, 2.31e-4] /\
-  sqrt((gx - GX) * (gx - GX) + (gy - GY) * (gy - GY) + (gz - GZ) * (gz - GZ))
-    / sqrt(t1 * t1 + t2 * t2 + t3 * t3) in [0, 2.04e-4]
+  ProductError in [0, 2.31e-4] /\
+  BackError in [0, 2.04e-4]
 }

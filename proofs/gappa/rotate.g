@@ -26,7 +26,7 @@
 # [2, 4)), where v and t are orthogonal and the sum is at most sqrt(2)
 # long; and the three components' errors are added as if independent.
 #
-#! looser ROTATE_MAX_REL_ERROR 3.8e-6 |q*v - rotation of v| / |v| for unit q
+#! looser ROTATE_MAX_REL_ERROR RelativeError in [0, 3.8e-6] |q*v - rotation of v| / |v| for unit q
 @rnd = float<ieee_32, ne>;
 
 w = rnd(W); x = rnd(X); y = rnd(Y); z = rnd(Z);
@@ -50,13 +50,14 @@ Q = w * w + x * x + y * y + z * z;
 V = vx * vx + vy * vy + vz * vz;
 U = x * x + y * y + z * z;
 T2 = Tx * Tx + Ty * Ty + Tz * Tz;
+RelativeError = sqrt((rx - Rx) * (rx - Rx) + (ry - Ry) * (ry - Ry) + (rz - Rz) * (rz - Rz))
+    / sqrt(V);
 
 { Q in [0.99999904632568359375, 1.00000095367431640625] /\ V in [0.25, 1] /\
   |w| <= 1 /\ |x| <= 1 /\ |y| <= 1 /\ |z| <= 1 /\
   |vx| <= 1 /\ |vy| <= 1 /\ |vz| <= 1
   ->
-  sqrt((rx - Rx) * (rx - Rx) + (ry - Ry) * (ry - Ry) + (rz - Rz) * (rz - Rz))
-    / sqrt(V) in [0, 3.8e-6]
+  RelativeError in [0, 3.8e-6]
 }
 
 # Lagrange's identity: |u x v|^2 = |u|^2 |v|^2 - (u . v)^2, per pair of components.

@@ -27,7 +27,7 @@
 # docs/verification-proofs.md).
 #
 #! sollya sin_poly.sollya 7.93e-9
-#! looser SIN_COS_POLY_MAX_ULP 0.85 sine polynomial on [2^-9, 2^-6), in ulps (part of the constant's domain)
+#! looser SIN_COS_POLY_MAX_ULP (y - Sin) * 1b31 in [-0.85, 0.85] sine polynomial on [2^-9, 2^-6), in ulps (part of the constant's domain)
 @rnd = float<ieee_32, ne>;
 
 r = rnd(R);
@@ -42,7 +42,10 @@ PP = -0x1.555546p-3 + S * (0x1.11073cp-7 + S * -0x1.9943ep-13);
 Q = r * (S * PP);
 P = r + Q;
 
-{ r in [1b-9, 0.7854] /\ (P - Sin) / Sin in [-7.93e-9, 7.93e-9]
+# Sin in [0.00195, 0.7072]: sin is increasing on the domain, sin(2^-9) > 0.0019531,
+# sin(0.7854) < 0.70711 (stated so that Sin is known to be nonzero where
+# the hints divide by it).
+{ r in [1b-9, 0.7854] /\ Sin in [0.00195, 0.7072] /\ (P - Sin) / Sin in [-7.93e-9, 7.93e-9]
   ->
   (r in [1b-7, 16777215b-30] /\ Sin <= 33554431b-32 -> (y - Sin) * 1b31 in [-0.85, 0.85]) /\
   (r in [1b-7, 16777215b-30] /\ Sin >= 33554431b-32 -> (y - Sin) * 1b30 in [-0.85, 0.85]) /\

@@ -18,7 +18,7 @@
 # (the f64 product of the share squared and phi^2) is the input's.
 #
 #! sollya sinc_f64.sollya 6.0966e-9
-#! bound SINC_F64_MAX_REL_ERROR 6.0967e-9 relative error of sinc(s) against sin(x) / x, s = x^2
+#! bound SINC_F64_MAX_REL_ERROR (g - Sc) / Sc in [-6.0967e-9, 6.0967e-9] relative error of sinc(s) against sin(x) / x, s = x^2
 @rnd = float<ieee_64, ne>;
 
 s = rnd(Sq);
@@ -29,7 +29,10 @@ g rnd= 1 + s * q;
 Q = (-0x1.55554bc836424p-3 + s * 0x1.110ed38056595p-7) + (s * s) * (-0x1.9f6ffeed2e992p-13 + s * 0x1.5dbdf10fb3356p-19);
 G = 1 + s * Q;
 
-{ s in [0, 2.4676] /\ (G - Sc) / Sc in [-6.0966e-9, 6.0966e-9]
+# Sc in [0.63, 1]: sin(x) / x falls from 1 at 0 to 2 / pi = 0.6366 at
+# pi / 2 (a property of the sine, stated so that Sc is known to be nonzero
+# where the hints divide by it).
+{ s in [0, 2.4676] /\ Sc in [0.63, 1] /\ (G - Sc) / Sc in [-6.0966e-9, 6.0966e-9]
   ->
   (g - G) / G in [-2.7e-16, 2.7e-16] /\
   (g - Sc) / Sc in [-6.0967e-9, 6.0967e-9]

@@ -5,7 +5,7 @@
 # Proven: for every positive f32 input, subnormal to f32::MAX, the result
 # is within 2^-24 (5.9605e-8) of the exact root, relative.
 #
-#! bound SQRT_MAX_REL_ERROR 1b-24 relative error of sqrt
+#! bound SQRT_MAX_REL_ERROR (r - sqrt(x)) / sqrt(x) in [-1b-24, 1b-24] relative error of sqrt
 @rnd = float<ieee_32, ne>;
 
 x = rnd(X);

@@ -223,23 +223,48 @@ fn the_contracts_reject_what_the_operations_must_not_give() {
     ));
 }
 
-/// The bound a Gappa model proves for an accuracy constant: the number
-/// after the constant's name on the model's `#!` line.
+/// The bound a Gappa model proves for an accuracy constant: the upper end
+/// of the goal that the model's `#!` line for the constant names
+/// (`#! bound NAME QUANTITY in [LO, HI] ...`; `cargo xtask prove` checks
+/// that it is a goal the certificate proves).
 fn proven(model: &str, constant: &str) -> f64 {
     let path = format!("{}/gappa/{model}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     text.lines()
         .filter_map(|line| line.strip_prefix("#!"))
+        .filter(|line| line.split_whitespace().nth(1) == Some(constant))
         .find_map(|line| {
-            let words: Vec<&str> = line.split_whitespace().collect();
-            let at = words.iter().position(|w| *w == constant)?;
-            words.get(at + 1)?.parse().ok()
+            let (_, interval) = line.split_once(" in [")?;
+            let (ends, _) = interval.split_once(']')?;
+            let (_, hi) = ends.split_once(',')?;
+            hi.trim().parse().ok()
         })
         .unwrap_or_else(|| panic!("{path} has no #! line for {constant}"))
 }
 
+/// The ends of a hypothesis `NAME in [LO, HI]` of a model, as decimals.
+fn hypothesis(model: &str, name: &str) -> (f64, f64) {
+    let path = format!("{}/gappa/{model}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let formula = text.split_once('{').map_or("", |(_, f)| f);
+    let at = formula
+        .find(&format!("{name} in ["))
+        .unwrap_or_else(|| panic!("{path}: no hypothesis on {name}"));
+    let rest = &formula[at + name.len() + 5..];
+    let (ends, _) = rest.split_once(']').unwrap_or_default();
+    let (lo, hi) = ends.split_once(',').unwrap_or_default();
+    let parse = |t: &str| {
+        t.trim()
+            .parse::<f64>()
+            .unwrap_or_else(|e| panic!("{path}: {t}: {e}"))
+    };
+    (parse(lo), parse(hi))
+}
+
+/// The contracts' constants are the bounds the models prove, read from
+/// the goals their claims name: not copied numbers that can go stale.
 #[test]
-fn the_contracts_state_no_tighter_bounds_than_gappa_proves() {
+fn the_contracts_state_the_bounds_gappa_proves() {
     for (name, stated, model, constant) in [
         (
             "MUL_ERROR_PROVEN",
@@ -262,9 +287,23 @@ fn the_contracts_state_no_tighter_bounds_than_gappa_proves() {
     ] {
         let bound = proven(model, constant);
         println!("{name} = {stated:e}; {model} proves {bound:e}");
+        assert_eq!(stated, bound, "{name} is not what {model} proves");
+    }
+}
+
+/// A unit quaternion of the contracts (`is_unit`: norm within `UNIT_TOL`
+/// of 1) lies in the domain of the models whose bounds the contracts of
+/// the product and the rotation state: its squared norm within the
+/// hypothesis of `mul.g` and `rotate.g` on `|q|^2`.
+#[test]
+fn the_contracts_domains_are_the_models_hypotheses() {
+    let (lo, hi) = ((1.0 - c::UNIT_TOL).powi(2), (1.0 + c::UNIT_TOL).powi(2));
+    for (model, name) in [("mul.g", "QA"), ("mul.g", "QB"), ("rotate.g", "Q")] {
+        let (h_lo, h_hi) = hypothesis(model, name);
+        println!("|q|^2 of a unit quaternion in [{lo:e}, {hi:e}]; {model} assumes {name} in [{h_lo:e}, {h_hi:e}]");
         assert!(
-            stated >= bound,
-            "{name} = {stated:e} is tighter than {model}'s {bound:e}"
+            h_lo <= lo && hi <= h_hi,
+            "is_unit admits |q|^2 in [{lo}, {hi}], beyond {model}'s {name} in [{h_lo}, {h_hi}]"
         );
     }
 }

@@ -125,7 +125,17 @@ enum Cmd {
     },
     /// Runs the Gappa and Sollya proofs of the accuracy constants, checks
     /// their Coq certificates and the models' correspondence with the code
-    Prove,
+    Prove {
+        /// Only the models of this directory, without the table of
+        /// constants (the correspondence test reads its models from it).
+        #[arg(long)]
+        models: Option<std::path::PathBuf>,
+        /// Show that four deliberately wrong variants of the models (a claim of
+        /// an assumed bound, a changed coefficient, an unproven side condition,
+        /// more precision than the code) each fail, for their own reason.
+        #[arg(long, conflicts_with = "models")]
+        refuse_wrong: bool,
+    },
 }
 
 fn main() -> ExitCode {
@@ -160,7 +170,14 @@ fn run(command: Cmd) -> Result<()> {
         } => m4f::filter_budget(features.as_deref(), peers, write_page)?,
         Cmd::PerfReport { draws } => report::perf_report(draws)?,
         Cmd::GltfCheck => gltf_check::gltf_check()?,
-        Cmd::Prove => prove::prove_all()?,
+        Cmd::Prove {
+            models,
+            refuse_wrong,
+        } => match (models, refuse_wrong) {
+            (Some(dir), _) => prove::prove_dir(&dir)?,
+            (None, true) => prove::refuse_wrong()?,
+            (None, false) => prove::prove_all()?,
+        },
     }
     Ok(())
 }
