@@ -92,6 +92,51 @@ fn run_loop<I: Copy + 'static, O: Copy + 'static>(
     jobs.push((op, Box::new(job)));
 }
 
+/// An input whose quaternions or transforms pass through memory on their
+/// way to the call: each through `black_box`, stored and loaded back, as a
+/// value passed by value to a function that is not inlined is.
+trait ThroughMemory: Copy {
+    fn through_memory(self) -> Self;
+}
+
+impl<A: Copy> ThroughMemory for (A, A) {
+    fn through_memory(self) -> Self {
+        (black_box(self.0), black_box(self.1))
+    }
+}
+
+impl<A: Copy> ThroughMemory for (A, A, f32) {
+    fn through_memory(self) -> Self {
+        (black_box(self.0), black_box(self.1), self.2)
+    }
+}
+
+/// [`run_loop`] of `f` twice, under the names `ops`: as the inputs are,
+/// and with each quaternion or transform passed through memory first.
+fn run_loops<I: ThroughMemory + 'static, O: Copy + 'static>(
+    jobs: &mut Vec<Job>,
+    [plain, through_memory]: [&'static str; 2],
+    library: &'static str,
+    inputs: &'static [I],
+    init: O,
+    f: impl Fn(I) -> O + Copy + 'static,
+) {
+    run_loop(jobs, plain, library, inputs, init, f);
+    run_loop(jobs, through_memory, library, inputs, init, move |x: I| {
+        f(x.through_memory())
+    });
+}
+
+/// The names of the user's-loop benchmarks of each operation: the plain
+/// loop, and the loop whose values went through memory.
+const SLERP_LOOPS: [&str; 2] = ["slerp, plain loop", "slerp, through memory"];
+const INTERPOLATE_LOOPS: [&str; 2] = [
+    "RigTForm interpolate, plain loop",
+    "RigTForm interpolate, through memory",
+];
+const NLERP_LOOPS: [&str; 2] = ["nlerp, plain loop", "nlerp, through memory"];
+const PRODUCT_LOOPS: [&str; 2] = ["q*q, plain loop", "q*q, through memory"];
+
 /// The one `alpha` of the slice benchmarks (hidden behind `black_box`).
 const SLICE_ALPHA: f32 = 0.37;
 
@@ -312,72 +357,37 @@ macro_rules! glam_benches {
             &p.tfa,
             |((t1, r1), (t2, r2), a)| (t1.lerp(t2, a), r1.slerp(r2, a)),
         );
-        run_loop(
+        run_loops(
             $c,
-            "slerp, plain loop",
+            SLERP_LOOPS,
             name,
             &p.qqa,
             $glam::Quat::IDENTITY,
             |(a, b, t)| a.slerp(b, t),
         );
-        run_loop(
+        run_loops(
             $c,
-            "RigTForm interpolate, plain loop",
+            INTERPOLATE_LOOPS,
             name,
             &p.tfa,
             ($glam::Vec3::ZERO, $glam::Quat::IDENTITY),
             |((t1, r1), (t2, r2), a)| (t1.lerp(t2, a), r1.slerp(r2, a)),
         );
-        run_loop(
+        run_loops(
             $c,
-            "slerp, through memory",
-            name,
-            &p.qqa,
-            $glam::Quat::IDENTITY,
-            |(a, b, t)| black_box(a).slerp(black_box(b), t),
-        );
-        run_loop(
-            $c,
-            "RigTForm interpolate, through memory",
-            name,
-            &p.tfa,
-            ($glam::Vec3::ZERO, $glam::Quat::IDENTITY),
-            |(a, b, t)| {
-                let ((t1, r1), (t2, r2)) = (black_box(a), black_box(b));
-                (t1.lerp(t2, t), r1.slerp(r2, t))
-            },
-        );
-        run_loop(
-            $c,
-            "nlerp, plain loop",
+            NLERP_LOOPS,
             name,
             &p.qqa,
             $glam::Quat::IDENTITY,
             |(a, b, t)| a.lerp(b, t),
         );
-        run_loop(
+        run_loops(
             $c,
-            "nlerp, through memory",
-            name,
-            &p.qqa,
-            $glam::Quat::IDENTITY,
-            |(a, b, t)| black_box(a).lerp(black_box(b), t),
-        );
-        run_loop(
-            $c,
-            "q*q, plain loop",
+            PRODUCT_LOOPS,
             name,
             &p.qq,
             $glam::Quat::IDENTITY,
             |(a, b)| a * b,
-        );
-        run_loop(
-            $c,
-            "q*q, through memory",
-            name,
-            &p.qq,
-            $glam::Quat::IDENTITY,
-            |(a, b)| black_box(a) * black_box(b),
         );
         run_slice(
             $c,
@@ -472,69 +482,37 @@ fn quat_ops(c: &mut Criterion) {
         run(jobs, "RigTForm interpolate", name, &p.tfa, |(a, b, t)| {
             a.interpolate(b, t)
         });
-        run_loop(
+        run_loops(
             jobs,
-            "slerp, plain loop",
+            SLERP_LOOPS,
             name,
             &p.qqa,
             Quat::IDENTITY,
             |(a, b, t)| a.slerp(b, t),
         );
-        run_loop(
+        run_loops(
             jobs,
-            "RigTForm interpolate, plain loop",
+            INTERPOLATE_LOOPS,
             name,
             &p.tfa,
             RigTForm::IDENTITY,
             |(a, b, t)| a.interpolate(b, t),
         );
-        run_loop(
+        run_loops(
             jobs,
-            "slerp, through memory",
-            name,
-            &p.qqa,
-            Quat::IDENTITY,
-            |(a, b, t)| black_box(a).slerp(black_box(b), t),
-        );
-        run_loop(
-            jobs,
-            "RigTForm interpolate, through memory",
-            name,
-            &p.tfa,
-            RigTForm::IDENTITY,
-            |(a, b, t)| black_box(a).interpolate(black_box(b), t),
-        );
-        run_loop(
-            jobs,
-            "nlerp, plain loop",
+            NLERP_LOOPS,
             name,
             &p.qqa,
             Quat::IDENTITY,
             |(a, b, t)| a.nlerp(b, t),
         );
-        run_loop(
+        run_loops(
             jobs,
-            "nlerp, through memory",
-            name,
-            &p.qqa,
-            Quat::IDENTITY,
-            |(a, b, t)| black_box(a).nlerp(black_box(b), t),
-        );
-        run_loop(
-            jobs,
-            "q*q, plain loop",
+            PRODUCT_LOOPS,
             name,
             &p.qq,
             Quat::IDENTITY,
             |(a, b)| a * b,
-        );
-        run_loop(
-            jobs,
-            "q*q, through memory",
-            name,
-            &p.qq,
-            Quat::IDENTITY,
-            |(a, b)| black_box(a) * black_box(b),
         );
         run_slice(
             jobs,
@@ -645,70 +623,22 @@ fn peers(jobs: &mut Vec<Job>, inp: &Inputs) {
         run(jobs, "RigTForm interpolate", name, &p.tfa, |(a, b, t)| {
             a.lerp_slerp(&b, t)
         });
-        run_loop(
+        let identity = nalgebra::UnitQuaternion::identity();
+        run_loops(jobs, SLERP_LOOPS, name, &p.qqa, identity, |(a, b, t)| {
+            a.slerp(&b, t)
+        });
+        run_loops(
             jobs,
-            "slerp, plain loop",
-            name,
-            &p.qqa,
-            nalgebra::UnitQuaternion::identity(),
-            |(a, b, t)| a.slerp(&b, t),
-        );
-        run_loop(
-            jobs,
-            "RigTForm interpolate, plain loop",
+            INTERPOLATE_LOOPS,
             name,
             &p.tfa,
             nalgebra::Isometry3::identity(),
             |(a, b, t)| a.lerp_slerp(&b, t),
         );
-        run_loop(
-            jobs,
-            "slerp, through memory",
-            name,
-            &p.qqa,
-            nalgebra::UnitQuaternion::identity(),
-            |(a, b, t)| black_box(a).slerp(&black_box(b), t),
-        );
-        run_loop(
-            jobs,
-            "RigTForm interpolate, through memory",
-            name,
-            &p.tfa,
-            nalgebra::Isometry3::identity(),
-            |(a, b, t)| black_box(a).lerp_slerp(&black_box(b), t),
-        );
-        run_loop(
-            jobs,
-            "nlerp, plain loop",
-            name,
-            &p.qqa,
-            nalgebra::UnitQuaternion::identity(),
-            |(a, b, t)| a.nlerp(&b, t),
-        );
-        run_loop(
-            jobs,
-            "nlerp, through memory",
-            name,
-            &p.qqa,
-            nalgebra::UnitQuaternion::identity(),
-            |(a, b, t)| black_box(a).nlerp(&black_box(b), t),
-        );
-        run_loop(
-            jobs,
-            "q*q, plain loop",
-            name,
-            &p.qq,
-            nalgebra::UnitQuaternion::identity(),
-            |(a, b)| a * b,
-        );
-        run_loop(
-            jobs,
-            "q*q, through memory",
-            name,
-            &p.qq,
-            nalgebra::UnitQuaternion::identity(),
-            |(a, b)| black_box(a) * black_box(b),
-        );
+        run_loops(jobs, NLERP_LOOPS, name, &p.qqa, identity, |(a, b, t)| {
+            a.nlerp(&b, t)
+        });
+        run_loops(jobs, PRODUCT_LOOPS, name, &p.qq, identity, |(a, b)| a * b);
         run_slice(
             jobs,
             "slerp slice",
