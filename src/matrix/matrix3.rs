@@ -1,13 +1,12 @@
 //! [`Matrix3`]: a 3x3 matrix, for the normal matrix a shader takes as a
 //! `mat3` and for the linear part of an affine map. What it shares with
-//! [`Matrix4`] is instanced at the bottom from `matrix/template.rs`.
+//! [`Matrix4`](crate::Matrix4) is instanced at the bottom from `matrix/template.rs`.
 
 use super::template::{columns, largest_magnitude, INVERSE_ENTRY_LIMIT, INVERSE_MINOR_LIMIT};
-use super::Matrix4;
 use crate::quat::Quat;
 use crate::vec::Cvec3;
 
-/// A 3x3 matrix in the conventions of [`Matrix4`]: column vectors
+/// A 3x3 matrix in the conventions of [`Matrix4`](crate::Matrix4): column vectors
 /// (`m * v`), stored column-major, so [`to_cols_array`](Self::to_cols_array)
 /// can go to `glUniformMatrix3fv` with `transpose = false`. glam's `Mat3`.
 ///
@@ -28,13 +27,6 @@ use crate::vec::Cvec3;
 pub struct Matrix3 {
     /// The three columns.
     pub cols: [Cvec3; 3],
-}
-
-impl Default for Matrix3 {
-    /// The identity matrix.
-    fn default() -> Self {
-        Self::IDENTITY
-    }
 }
 
 impl Matrix3 {
@@ -90,13 +82,14 @@ impl Matrix3 {
         [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z]
     }
 
-    /// The rotation matrix of a unit quaternion: `from_quat(q) * v == q * v`
-    /// for every vector `v`; the upper-left block of
-    /// [`Matrix4::from_quat`], entry for entry.
+    /// The rotation matrix of a unit quaternion (the notes'
+    /// `makeRotation`): `from_quat(q) * v == q * v` for every vector `v`;
+    /// the upper-left block of [`Matrix4::from_quat`](crate::Matrix4::from_quat),
+    /// entry for entry.
     ///
     /// # Preconditions
     ///
-    /// `q` is a unit quaternion, as for [`Matrix4::from_quat`].
+    /// `q` is a unit quaternion.
     ///
     /// # Accuracy
     ///
@@ -111,20 +104,16 @@ impl Matrix3 {
     /// ```
     #[must_use]
     pub fn from_quat(q: Quat) -> Self {
-        Self::from(Matrix4::from_quat(q))
-    }
-
-    /// The upper-left 3x3 block of `m` (glam's `Mat3::from_mat4`); same as
-    /// `Matrix3::from(m)`.
-    ///
-    /// ```
-    /// use rigtform::{Matrix3, Matrix4};
-    /// assert_eq!(Matrix3::from_mat4(Matrix4::IDENTITY), Matrix3::IDENTITY);
-    /// ```
-    #[inline]
-    #[must_use]
-    pub fn from_mat4(m: Matrix4) -> Self {
-        Self::from(m)
+        let Quat { w, x, y, z } = q;
+        let (x2, y2, z2) = (x + x, y + y, z + z);
+        let (xx, yy, zz) = (x * x2, y * y2, z * z2);
+        let (xy, xz, yz) = (x * y2, x * z2, y * z2);
+        let (wx, wy, wz) = (w * x2, w * y2, w * z2);
+        Self::from_cols(
+            Cvec3::new(1.0 - (yy + zz), xy + wz, xz - wy),
+            Cvec3::new(xy - wz, 1.0 - (xx + zz), yz + wx),
+            Cvec3::new(xz + wy, yz - wx, 1.0 - (xx + yy)),
+        )
     }
 
     /// The transpose.
@@ -221,177 +210,7 @@ impl Matrix3 {
     }
 }
 
-impl From<Matrix4> for Matrix3 {
-    /// The upper-left 3x3 block (glam's `Mat3::from_mat4`): the linear
-    /// part of an affine map, without its translation.
-    ///
-    /// ```
-    /// use rigtform::{Cvec3, Matrix3, Matrix4};
-    /// let m = Matrix4::from_translation(Cvec3::X) * Matrix4::from_scale(Cvec3::splat(2.0));
-    /// assert_eq!(Matrix3::from(m), Matrix3::from_cols(Cvec3::X * 2.0, Cvec3::Y * 2.0, Cvec3::Z * 2.0));
-    /// ```
-    #[inline]
-    fn from(m: Matrix4) -> Self {
-        let [a, b, c, _] = m.cols;
-        Self::from_cols(a.xyz(), b.xyz(), c.xyz())
-    }
-}
-
-impl From<Matrix3> for Matrix4 {
-    /// The affine map of the linear part `m`, with no translation (glam's
-    /// `Mat4::from_mat3`).
-    ///
-    /// ```
-    /// use rigtform::{Matrix3, Matrix4};
-    /// assert_eq!(Matrix4::from(Matrix3::IDENTITY), Matrix4::IDENTITY);
-    /// ```
-    #[inline]
-    fn from(m: Matrix3) -> Self {
-        let [a, b, c] = m.cols;
-        Matrix4::from_cols(
-            crate::Cvec4::from_vector(a),
-            crate::Cvec4::from_vector(b),
-            crate::Cvec4::from_vector(c),
-            crate::Cvec4::W,
-        )
-    }
-}
-
 columns!(Matrix3, Cvec3, 9, { a: x, b: y, c: z });
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use rand::{Rng, SeedableRng};
-
-    fn to_glam(m: Matrix3) -> glam::Mat3 {
-        glam::Mat3::from_cols_array(&m.to_cols_array())
-    }
-
-    fn to_f64(m: Matrix3) -> nalgebra::Matrix3<f64> {
-        nalgebra::Matrix3::from_column_slice(&m.to_cols_array().map(f64::from))
-    }
-
-    use crate::test_draws::count as draws;
-
-    #[test]
-    fn inverse_and_determinant_are_within_their_bounds_of_nalgebra_in_f64() {
-        use crate::accuracy::{MATRIX3_DETERMINANT_MAX_REL_ERROR, MATRIX3_INVERSE_MAX_REL_ERROR};
-        let mut rng = rand::rngs::StdRng::seed_from_u64(27);
-        let (mut worst_inv, mut worst_det, mut seen) = (0f64, 0f64, 0);
-        for _ in 0..draws() {
-            let m =
-                Matrix3::from_cols_array(&core::array::from_fn(|_| rng.random_range(-1.0..=1.0)));
-            let m64 = to_f64(m);
-            let Some(inv64) = m64.try_inverse() else {
-                continue;
-            };
-            let cond = m64.norm() * inv64.norm();
-            if cond > 1e4 {
-                continue;
-            }
-            seen += 1;
-            let inv = m.inverse().expect("invertible");
-            let e_inv = (to_f64(inv) - inv64).norm() / inv64.norm() / cond;
-            let det64 = m64.determinant();
-            let e_det = (f64::from(m.determinant()) - det64).abs() / det64.abs() / cond;
-            worst_inv = worst_inv.max(e_inv);
-            worst_det = worst_det.max(e_det);
-            assert!(
-                e_inv <= f64::from(MATRIX3_INVERSE_MAX_REL_ERROR),
-                "{m:?}: {e_inv:e}"
-            );
-            assert!(
-                e_det <= f64::from(MATRIX3_DETERMINANT_MAX_REL_ERROR),
-                "{m:?}: {e_det:e}"
-            );
-            // glam's inverse (cofactors too) agrees, within both errors.
-            let g = to_glam(m).inverse();
-            let size = g.to_cols_array().iter().fold(0f32, |a, b| a.max(b.abs()));
-            assert!(g.abs_diff_eq(to_glam(inv), 1e-5 * cond as f32 * size));
-        }
-        std::println!(
-            "Matrix3 over {seen} draws (condition <= 1e4): inverse {worst_inv:.3e}, determinant {worst_det:.3e} (relative, per unit of condition)"
-        );
-    }
-
-    #[test]
-    fn products_transpose_and_conversions_agree_with_glam() {
-        let mut rng = rand::rngs::StdRng::seed_from_u64(28);
-        for _ in 0..1000 {
-            let a =
-                Matrix3::from_cols_array(&core::array::from_fn(|_| rng.random_range(-4.0..=4.0)));
-            let b =
-                Matrix3::from_cols_array(&core::array::from_fn(|_| rng.random_range(-4.0..=4.0)));
-            let v = Cvec3::new(rng.random(), rng.random(), rng.random());
-            let gv = glam::Vec3::new(v.x, v.y, v.z);
-            let close = |x: glam::Mat3, y: glam::Mat3| x.abs_diff_eq(y, 1e-5);
-            assert!(close(to_glam(a * b), to_glam(a) * to_glam(b)));
-            assert!(
-                ((to_glam(a) * gv).to_array().iter().zip((a * v).to_array()))
-                    .all(|(x, y)| (x - y).abs() <= 1e-5)
-            );
-            assert_eq!(to_glam(a.transpose()), to_glam(a).transpose());
-            assert_eq!(a.determinant().signum(), to_glam(a).determinant().signum());
-            for i in 0..3 {
-                assert_eq!(a.col(i).to_array(), to_glam(a).col(i).to_array());
-                assert_eq!(a.row(i).to_array(), to_glam(a).row(i).to_array());
-            }
-            let q = Quat::from_axis_angle(v + Cvec3::ONE, rng.random_range(-3.0..3.0));
-            let gq = glam::Quat::from_xyzw(q.x, q.y, q.z, q.w);
-            assert!(close(
-                to_glam(Matrix3::from_quat(q)),
-                glam::Mat3::from_quat(gq)
-            ));
-            let m4 = Matrix4::from_cols_array(&core::array::from_fn(|_| rng.random()));
-            let g4 = glam::Mat4::from_cols_array(&m4.to_cols_array());
-            assert_eq!(to_glam(Matrix3::from(m4)), glam::Mat3::from_mat4(g4));
-            assert_eq!(Matrix3::from_mat4(m4), Matrix3::from(m4));
-            assert_eq!(Matrix4::from_mat3(a), Matrix4::from(a));
-            let back = Matrix4::from(a).to_cols_array();
-            assert_eq!(back, glam::Mat4::from_mat3(to_glam(a)).to_cols_array());
-            assert_eq!(Matrix3::from(<[f32; 9]>::from(a)), a);
-        }
-        assert!(Matrix3::IDENTITY.col(3).is_nan() && Matrix3::IDENTITY.row(usize::MAX).is_nan());
-        assert_eq!(Matrix3::default(), Matrix3::IDENTITY);
-        assert_eq!(to_glam(Matrix3::IDENTITY), glam::Mat3::IDENTITY);
-        assert_eq!(to_glam(Matrix3::ZERO), glam::Mat3::ZERO);
-        assert_eq!(
-            std::format!(
-                "{}",
-                Matrix3::from_cols_array(&core::array::from_fn(|i| i as f32 * 0.5))
-            ),
-            std::format!(
-                "{}",
-                glam::Mat3::from_cols_array(&core::array::from_fn(|i| i as f32 * 0.5))
-            )
-        );
-        let mut m = Matrix3::IDENTITY;
-        m *= Matrix3::from_cols(Cvec3::X * 2.0, Cvec3::Y, Cvec3::Z);
-        assert_eq!(m.determinant(), 2.0);
-    }
-
-    #[test]
-    fn singular_huge_and_non_finite_matrices_have_no_inverse() {
-        let rank2 = Matrix3::from_cols(Cvec3::X, Cvec3::Y, Cvec3::X + Cvec3::Y);
-        assert_eq!(rank2.inverse(), None);
-        assert_eq!(Matrix3::NAN.inverse(), None);
-        let mut inf = Matrix3::IDENTITY;
-        inf.cols[2].z = f32::INFINITY;
-        assert_eq!(inf.inverse(), None);
-        // Minors of 2^86, beyond the 2^62 that keeps the determinant finite.
-        let big = Matrix3::from_cols(Cvec3::X, Cvec3::Y, Cvec3::Z)
-            * Matrix3::from_cols(
-                Cvec3::X * 2f32.powi(43),
-                Cvec3::Y * 2f32.powi(43),
-                Cvec3::Z * 2f32.powi(43),
-            );
-        assert_eq!(big.inverse(), None);
-        // 1 / det overflows for a tiny determinant.
-        let tiny = Matrix3::from_cols(Cvec3::X * 1e-20, Cvec3::Y * 1e-20, Cvec3::Z);
-        assert_eq!(tiny.inverse(), None);
-        let huge = Matrix3::from_cols(Cvec3::X * 1e19, Cvec3::Y, Cvec3::Z);
-        assert_eq!(huge.inverse(), None);
-        assert!(Matrix3::NAN.determinant().is_nan());
-    }
-}
+mod tests;

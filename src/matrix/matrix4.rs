@@ -5,6 +5,7 @@
 //! `matrix/template.rs`.
 
 use super::template::{columns, largest_magnitude, INVERSE_ENTRY_LIMIT, INVERSE_MINOR_LIMIT};
+use super::Matrix3;
 use crate::float;
 use crate::quat::Quat;
 use crate::rigtform::RigTForm;
@@ -35,13 +36,6 @@ const INVERSE_PRODUCT_LIMIT: f32 = 4.253_529_6e37;
 pub struct Matrix4 {
     /// The four columns; `cols[3]` holds the translation of an affine map.
     pub cols: [Cvec4; 4],
-}
-
-impl Default for Matrix4 {
-    /// The identity matrix.
-    fn default() -> Self {
-        Self::IDENTITY
-    }
 }
 
 impl Matrix4 {
@@ -166,17 +160,7 @@ impl Matrix4 {
     /// ```
     #[must_use]
     pub fn from_quat(q: Quat) -> Self {
-        let Quat { w, x, y, z } = q;
-        let (x2, y2, z2) = (x + x, y + y, z + z);
-        let (xx, yy, zz) = (x * x2, y * y2, z * z2);
-        let (xy, xz, yz) = (x * y2, x * z2, y * z2);
-        let (wx, wy, wz) = (w * x2, w * y2, w * z2);
-        Self::from_cols(
-            Cvec4::new(1.0 - (yy + zz), xy + wz, xz - wy, 0.0),
-            Cvec4::new(xy - wz, 1.0 - (xx + zz), yz + wx, 0.0),
-            Cvec4::new(xz + wy, yz - wx, 1.0 - (xx + yy), 0.0),
-            Cvec4::new(0.0, 0.0, 0.0, 1.0),
-        )
+        Self::from(Matrix3::from_quat(q))
     }
 
     /// The matrix `T R` of a rigid body transform (the notes'
@@ -392,41 +376,11 @@ impl Matrix4 {
     /// ```
     #[must_use]
     pub fn normal_matrix(self) -> Option<Self> {
-        let [a, b, c, _] = self.cols;
-        let (a, b, c) = (a.xyz(), b.xyz(), c.xyz());
-        // The inverse of [a b c] has rows (b x c, c x a, a x b) / det,
-        // so its transpose has them as columns.
-        // As in `inverse`, each step is checked before it can overflow:
-        // entries within 2^63 keep the cross products finite, and minors
-        // within 2^62 the determinant.
-        let entries = [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z];
-        if !(a.is_finite() && b.is_finite() && c.is_finite())
-            || largest_magnitude(&entries) > INVERSE_ENTRY_LIMIT
-        {
-            return None;
-        }
-        let (bc, ca, ab) = (b.cross(c), c.cross(a), a.cross(b));
-        let minors = [bc, ca, ab].map(|m| largest_magnitude(&[m.x, m.y, m.z]));
-        if largest_magnitude(&minors) > INVERSE_MINOR_LIMIT {
-            return None;
-        }
-        let det = a.dot(bc);
-        if det == 0.0 {
-            return None;
-        }
-        let inv_det = 1.0 / det;
-        if !inv_det.is_finite() {
-            return None;
-        }
-        let n = Self::from_cols(
-            Cvec4::from_vector(bc * inv_det),
-            Cvec4::from_vector(ca * inv_det),
-            Cvec4::from_vector(ab * inv_det),
-            Cvec4::new(0.0, 0.0, 0.0, 1.0),
-        );
-        // Each scaled minor is a product of two finite numbers: finite,
-        // or infinite where the normal matrix does not fit.
-        n.is_finite().then_some(n)
+        // The inverse transpose of the block: its inverse, whose rows are
+        // (b x c, c x a, a x b) / det, transposed (exactly).
+        Matrix3::from(self)
+            .inverse()
+            .map(|inverse| Self::from(inverse.transpose()))
     }
 
     /// The perspective projection of `gluPerspective`: vertical field of
@@ -523,6 +477,57 @@ impl From<RigTForm> for Matrix4 {
     #[inline]
     fn from(a: RigTForm) -> Self {
         Self::from_rig_tform(a)
+    }
+}
+
+impl Matrix3 {
+    /// The upper-left 3x3 block of `m` (glam's `Mat3::from_mat4`); same as
+    /// `Matrix3::from(m)`.
+    ///
+    /// ```
+    /// use rigtform::{Matrix3, Matrix4};
+    /// assert_eq!(Matrix3::from_mat4(Matrix4::IDENTITY), Matrix3::IDENTITY);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn from_mat4(m: Matrix4) -> Self {
+        Self::from(m)
+    }
+}
+
+impl From<Matrix4> for Matrix3 {
+    /// The upper-left 3x3 block (glam's `Mat3::from_mat4`): the linear
+    /// part of an affine map, without its translation.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix3, Matrix4};
+    /// let m = Matrix4::from_translation(Cvec3::X) * Matrix4::from_scale(Cvec3::splat(2.0));
+    /// assert_eq!(Matrix3::from(m), Matrix3::from_cols(Cvec3::X * 2.0, Cvec3::Y * 2.0, Cvec3::Z * 2.0));
+    /// ```
+    #[inline]
+    fn from(m: Matrix4) -> Self {
+        let [a, b, c, _] = m.cols;
+        Self::from_cols(a.xyz(), b.xyz(), c.xyz())
+    }
+}
+
+impl From<Matrix3> for Matrix4 {
+    /// The affine map of the linear part `m`, with no translation (glam's
+    /// `Mat4::from_mat3`).
+    ///
+    /// ```
+    /// use rigtform::{Matrix3, Matrix4};
+    /// assert_eq!(Matrix4::from(Matrix3::IDENTITY), Matrix4::IDENTITY);
+    /// ```
+    #[inline]
+    fn from(m: Matrix3) -> Self {
+        let [a, b, c] = m.cols;
+        Self::from_cols(
+            Cvec4::from_vector(a),
+            Cvec4::from_vector(b),
+            Cvec4::from_vector(c),
+            Cvec4::W,
+        )
     }
 }
 

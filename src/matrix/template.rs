@@ -1,7 +1,7 @@
 //! What [`Matrix3`](crate::Matrix3) and [`Matrix4`](crate::Matrix4) share,
 //! written once: the [`columns!`] macro each matrix's file instances (the
-//! products with a column vector and with a matrix, the array
-//! conversions, a column or a row by index, the finiteness test), and the
+//! identity as the default, the products with a column vector and with a
+//! matrix, the array conversions, a column or a row by index, the finiteness test), and the
 //! limits both inverses check their entries against.
 //!
 //! Every example of a shared method names its matrix type `M` and its
@@ -79,6 +79,13 @@ macro_rules! columns {
             #[must_use]
             pub fn is_finite(self) -> bool {
                 self.cols.iter().all(|c| c.is_finite())
+            }
+        }
+
+        impl Default for $m {
+            /// The identity matrix.
+            fn default() -> Self {
+                Self::IDENTITY
             }
         }
 
