@@ -33,8 +33,8 @@ pub fn perf_report(draws: u64) -> Result<()> {
     page::splice(&page_text, page::PERF_REPORT, "")?;
     page::splice(&page_text, page::ATTITUDE, "")?;
 
-    let host = host_table()?;
-    let avx2 = avx2_table()?;
+    let host = host_table(false)?;
+    let avx2 = host_table(true)?;
     say("Cortex-M4F: instruction counts, then the flash builds");
     let ops = m4f::with_flash(m4f::counts(None)?, None)?;
     let inputs = m4f::inputs(&ops)?;
@@ -82,11 +82,23 @@ pub fn perf_report(draws: u64) -> Result<()> {
     Ok(())
 }
 
-/// `cargo bench -p rigtform-compare --bench ops`; the table of medians per
-/// call, rows and columns in the order the bench lists its benchmarks.
-fn host_table() -> Result<String> {
+/// The benchmarks that the AVX2 build runs again: the single calls of
+/// slerp and `RigTForm::interpolate`, and the user's loops.
+const AVX2_FILTER: &str = "^(slerp|RigTForm interpolate|slerp slice|RigTForm interpolate slice)/|, plain loop/|, through memory/";
+
+/// The table of medians per call of one run of `cargo bench -p
+/// rigtform-compare --bench ops`, rows and columns in the order the bench
+/// lists its benchmarks: every benchmark on the default target, or with
+/// `avx2` the rows of [`AVX2_FILTER`] built with `-C target-cpu=x86-64-v3`
+/// (in a target directory of their own, so that the default build is
+/// kept, with their own criterion results).
+fn host_table(avx2: bool) -> Result<String> {
     let target = target_directory()?;
-    let results = target.join("criterion");
+    let results = target.join(if avx2 {
+        "criterion-x86-64-v3"
+    } else {
+        "criterion"
+    });
     if results.exists() {
         say(format!("removing the old results in {}", results.display()));
         std::fs::remove_dir_all(&results)?;
@@ -96,48 +108,24 @@ fn host_table() -> Result<String> {
         let mut cmd = tools::cargo();
         cmd.current_dir(&root)
             .args(["bench", "-p", COMPARE, "--bench", BENCH]);
+        if avx2 {
+            cmd.env("RUSTFLAGS", "-C target-cpu=x86-64-v3")
+                .env("CRITERION_HOME", &results)
+                .arg("--target-dir")
+                .arg(target.join("x86-64-v3"));
+        }
         cmd.arg("--").args(args);
         cmd
     };
+    let filter: &[&str] = if avx2 { &[AVX2_FILTER] } else { &[] };
     say(format!(
-        "host: cargo bench -p {COMPARE} --bench {BENCH} (several minutes)"
+        "host{}: cargo bench -p {COMPARE} --bench {BENCH} -- {} (several minutes)",
+        if avx2 { ", AVX2" } else { "" },
+        filter.join(" ")
     ));
-    let listed = criterion::listed(&tools::stdout_of(&mut bench(&["--list"]))?);
-    tools::run(&mut bench(&[]))?;
-    criterion::host_table(&listed, &criterion::read_all(&results)?)
-}
-
-/// The benchmarks that `avx2_table` runs again: the single calls and their
-/// plain loops.
-const AVX2_FILTER: &str =
-    "^(slerp|slerp, plain loop|RigTForm interpolate|RigTForm interpolate, plain loop)/";
-
-/// The rows of [`AVX2_FILTER`] built with `-C target-cpu=x86-64-v3` (in a
-/// target directory of their own, so that the default build is kept) and
-/// run after the default ones; the table as [`host_table`]'s.
-fn avx2_table() -> Result<String> {
-    let target = target_directory()?;
-    let results = target.join("criterion-x86-64-v3");
-    if results.exists() {
-        say(format!("removing the old results in {}", results.display()));
-        std::fs::remove_dir_all(&results)?;
-    }
-    let root = tools::root()?;
-    let bench = |args: &[&str]| {
-        let mut cmd = tools::cargo();
-        cmd.current_dir(&root)
-            .env("RUSTFLAGS", "-C target-cpu=x86-64-v3")
-            .env("CRITERION_HOME", &results)
-            .args(["bench", "-p", COMPARE, "--bench", BENCH, "--target-dir"])
-            .arg(target.join("x86-64-v3"));
-        cmd.arg("--").args(args);
-        cmd
-    };
-    say(format!(
-        "host, AVX2: cargo bench -p {COMPARE} --bench {BENCH} -- '{AVX2_FILTER}'"
-    ));
-    let listed = criterion::listed(&tools::stdout_of(&mut bench(&["--list", AVX2_FILTER]))?);
-    tools::run(&mut bench(&[AVX2_FILTER]))?;
+    let list = [&["--list"][..], filter].concat();
+    let listed = criterion::listed(&tools::stdout_of(&mut bench(&list))?);
+    tools::run(&mut bench(filter))?;
     criterion::host_table(&listed, &criterion::read_all(&results)?)
 }
 
