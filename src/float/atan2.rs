@@ -83,7 +83,7 @@ pub(crate) fn atan2_kernel(y: f32, x: f32) -> f32 {
 mod tests {
     use super::*;
     use crate::accuracy::{ATAN2_MAX_ULP, ATAN_POLY_MAX_ULP};
-    use crate::float::sweep::{floats, ulps, Worst, SAMPLE_STEP};
+    use crate::float::sweep::{floats, ulps, Worst};
 
     /// The largest ulp errors of `atan_poly` and `atan2_kernel` over every
     /// `step`-th f32 of their ranges.
@@ -105,20 +105,7 @@ mod tests {
         atan2.check();
     }
 
-    /// Every [`SAMPLE_STEP`]-th f32 of the ranges: the sampled variant of
-    /// `exhaustive_kernel_sweep` that every test run does.
-    #[test]
-    fn kernel_is_within_its_ulp_bounds_on_a_sample() {
-        kernel_sweep(SAMPLE_STEP);
-    }
-
-    /// Every f32 of the ranges:
-    /// `cargo test --release --lib -- --ignored exhaustive_kernel_sweep`.
-    #[test]
-    #[ignore = "minutes in release: run by hand after changing a kernel"]
-    fn exhaustive_kernel_sweep() {
-        kernel_sweep(1);
-    }
+    crate::float::sweep::sweep_tests!(kernel_sweep);
 
     /// `atan2_kernel` on random pairs with exponents from subnormal to huge,
     /// every sign, against f64.

@@ -149,7 +149,7 @@ fn sin_cos_reduced(x: f32) -> (f32, f32) {
 mod tests {
     use super::*;
     use crate::accuracy::{SIN_COS_MAX_ULP, SIN_COS_NARROW_MAX_ULP, SIN_COS_POLY_MAX_ULP};
-    use crate::float::sweep::{floats, ulps, Worst, SAMPLE_STEP};
+    use crate::float::sweep::{floats, ulps, Worst};
     use core::f32::consts::FRAC_PI_4;
 
     /// The largest ulp errors of the polynomials and of `sin_cos_kernel`
@@ -178,21 +178,7 @@ mod tests {
         }
     }
 
-    /// Every [`SAMPLE_STEP`]-th f32 of each range: the sampled variant of
-    /// `exhaustive_kernel_sweep` that every test run does.
-    #[test]
-    fn kernel_is_within_its_ulp_bounds_on_a_sample() {
-        kernel_sweep(SAMPLE_STEP);
-    }
-
-    /// Every f32 of each range:
-    /// `cargo test --release --lib -- --ignored exhaustive_kernel_sweep`
-    /// (a few minutes).
-    #[test]
-    #[ignore = "minutes in release: run by hand after changing a kernel"]
-    fn exhaustive_kernel_sweep() {
-        kernel_sweep(1);
-    }
+    crate::float::sweep::sweep_tests!(kernel_sweep);
 
     /// sin is odd and cos even, bit for bit, on both paths; and the
     /// quadrant of the reduced path is right on either side of zero.

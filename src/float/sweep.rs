@@ -73,3 +73,26 @@ impl Worst {
         );
     }
 }
+
+/// The two tests of a kernel's sweep function `$sweep(step)`:
+/// `kernel_is_within_its_ulp_bounds_on_a_sample`, every [`SAMPLE_STEP`]-th
+/// f32 of its ranges in every test run, and `exhaustive_kernel_sweep`,
+/// every f32, run by hand after changing a kernel
+/// (`cargo test --release --lib -- --ignored exhaustive_kernel_sweep`,
+/// minutes in release).
+macro_rules! sweep_tests {
+    ($sweep:ident) => {
+        #[test]
+        fn kernel_is_within_its_ulp_bounds_on_a_sample() {
+            $sweep($crate::float::sweep::SAMPLE_STEP);
+        }
+
+        #[test]
+        #[ignore = "minutes in release: run by hand after changing a kernel"]
+        fn exhaustive_kernel_sweep() {
+            $sweep(1);
+        }
+    };
+}
+
+pub(crate) use sweep_tests;
