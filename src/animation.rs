@@ -194,6 +194,7 @@ impl core::fmt::Display for SamplerError {
 
 mod sealed {
     use crate::{Cvec3, Quat};
+    use core::ops::{Add, Mul};
 
     /// What a [`super::Sampler`] needs of its values; implemented for
     /// [`Quat`] and [`Cvec3`] only.
@@ -214,6 +215,15 @@ mod sealed {
         fn hermite(p0: Self, b0: Self, p1: Self, a1: Self, td: f32, s: [f32; 4]) -> Self;
     }
 
+    /// The sum of [`Value::hermite`], component by component (as vectors:
+    /// each operation is the same IEEE 754 operation on every component).
+    fn hermite_sum<T>(p0: T, b0: T, p1: T, a1: T, td: f32, s: [f32; 4]) -> T
+    where
+        T: Add<Output = T> + Mul<f32, Output = T>,
+    {
+        (p0 * s[0] + p1 * s[2]) + (b0 * s[1] + a1 * s[3]) * td
+    }
+
     impl Value for Quat {
         const NAN: Self = Quat::NAN;
         fn finite(self) -> bool {
@@ -223,17 +233,9 @@ mod sealed {
             a.slerp(b, u)
         }
         fn hermite(p0: Self, b0: Self, p1: Self, a1: Self, td: f32, s: [f32; 4]) -> Self {
-            let c = |p0: f32, b0: f32, p1: f32, a1: f32| {
-                (s[0] * p0 + s[2] * p1) + td * (s[1] * b0 + s[3] * a1)
-            };
-            Quat {
-                x: c(p0.x, b0.x, p1.x, a1.x),
-                y: c(p0.y, b0.y, p1.y, a1.y),
-                z: c(p0.z, b0.z, p1.z, a1.z),
-                w: c(p0.w, b0.w, p1.w, a1.w),
-            }
-            .try_normalize()
-            .unwrap_or(Quat::IDENTITY)
+            hermite_sum(p0, b0, p1, a1, td, s)
+                .try_normalize()
+                .unwrap_or(Quat::IDENTITY)
         }
     }
 
@@ -246,14 +248,7 @@ mod sealed {
             a.lerp(b, u)
         }
         fn hermite(p0: Self, b0: Self, p1: Self, a1: Self, td: f32, s: [f32; 4]) -> Self {
-            let c = |p0: f32, b0: f32, p1: f32, a1: f32| {
-                (s[0] * p0 + s[2] * p1) + td * (s[1] * b0 + s[3] * a1)
-            };
-            Cvec3 {
-                x: c(p0.x, b0.x, p1.x, a1.x),
-                y: c(p0.y, b0.y, p1.y, a1.y),
-                z: c(p0.z, b0.z, p1.z, a1.z),
-            }
+            hermite_sum(p0, b0, p1, a1, td, s)
         }
     }
 }
