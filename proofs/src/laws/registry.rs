@@ -85,6 +85,16 @@ fn edge_alpha(d: &mut Draws) -> f32 {
     ALPHAS.get(d.below(ALPHAS.len())).copied().unwrap_or(0.5)
 }
 
+/// `law` of a [`pair`] and an `alpha` drawn after it.
+fn on_pair(
+    d: &mut Draws,
+    alpha: impl Fn(&mut Draws) -> f32,
+    law: fn(Quat, Quat, f32) -> Verdict,
+) -> Verdict {
+    let (a, b) = pair(d);
+    law(a, b, alpha(d))
+}
+
 /// A pair of unit quaternions: half of them random, the other half one of
 /// the slerp edge classes (identical, 1e-6 rad apart, antipodal: the same
 /// rotation as `-a`, and opposite: a half turn apart).
@@ -229,26 +239,17 @@ pub const LAWS: &[Law] = &[
     law!(
         "slerp_is_unit (pairs, edge alphas)",
         NoHarness(BEYOND_THE_SOLVER),
-        |d| {
-            let (a, b) = pair(d);
-            laws::slerp_is_unit(a, b, edge_alpha(d))
-        }
+        |d| on_pair(d, edge_alpha, laws::slerp_is_unit)
     ),
     law!(
         "slerp_is_unit (pairs, alpha in [-2, 3])",
         NoHarness(BEYOND_THE_SOLVER),
-        |d| {
-            let (a, b) = pair(d);
-            laws::slerp_is_unit(a, b, d.uniform(-2.0, 3.0))
-        }
+        |d| on_pair(d, |d| d.uniform(-2.0, 3.0), laws::slerp_is_unit)
     ),
     law!(
         "slerp_is_unit (pairs, any finite alpha)",
         NoHarness(BEYOND_THE_SOLVER),
-        |d| {
-            let (a, b) = pair(d);
-            laws::slerp_is_unit(a, b, finite(d))
-        }
+        |d| on_pair(d, finite, laws::slerp_is_unit)
     ),
     law!(
         "slerp_of_non_finite_is_nan",
@@ -278,26 +279,21 @@ pub const LAWS: &[Law] = &[
     law!(
         "slerp_turns_by_alpha_times_the_angle",
         NoHarness(BEYOND_THE_SOLVER),
-        |d| {
-            let (a, b) = pair(d);
-            laws::slerp_turns_by_alpha_times_the_angle(a, b, d.uniform(0.0, 1.0))
-        }
+        |d| on_pair(
+            d,
+            |d| d.uniform(0.0, 1.0),
+            laws::slerp_turns_by_alpha_times_the_angle
+        )
     ),
     law!(
         "slerp_matches_the_notes",
         NoHarness("f64 sines and arctangents of libm"),
-        |d| {
-            let (a, b) = pair(d);
-            laws::slerp_matches_the_notes(a, b, d.uniform(-1.0, 2.0))
-        }
+        |d| on_pair(d, |d| d.uniform(-1.0, 2.0), laws::slerp_matches_the_notes)
     ),
     law!(
         "slerp_takes_the_short_way",
         NoHarness(BEYOND_THE_SOLVER),
-        |d| {
-            let (a, b) = pair(d);
-            laws::slerp_takes_the_short_way(a, b, d.uniform(-2.0, 3.0))
-        }
+        |d| on_pair(d, |d| d.uniform(-2.0, 3.0), laws::slerp_takes_the_short_way)
     ),
     law!(
         "slerp_reaches_the_rotation_of_b_at_one",
@@ -307,10 +303,11 @@ pub const LAWS: &[Law] = &[
             laws::slerp_reaches_the_rotation_of_b_at_one(a, b)
         }
     ),
-    law!("nlerp_is_unit", NoHarness(BEYOND_THE_SOLVER), |d| {
-        let (a, b) = pair(d);
-        laws::nlerp_is_unit(a, b, d.uniform(0.0, 1.0))
-    }),
+    law!("nlerp_is_unit", NoHarness(BEYOND_THE_SOLVER), |d| on_pair(
+        d,
+        |d| d.uniform(0.0, 1.0),
+        laws::nlerp_is_unit
+    )),
     law!(
         "blend_is_unit_or_identity",
         NoHarness(BEYOND_THE_SOLVER),
