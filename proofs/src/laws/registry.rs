@@ -158,6 +158,13 @@ const INTERPOLATIONS: [Interpolation; 3] = [
 
 /// An entry: the law's name, its case, and its harness.
 macro_rules! law {
+    ($name:literal, $harness:expr, $input:ident => $law:path) => {
+        Law {
+            name: $name,
+            case: |d: &mut Draws| $law($input(d)),
+            harness: $harness,
+        }
+    };
     ($name:literal, $harness:expr, |$d:ident| $case:expr) => {
         Law {
             name: $name,
@@ -321,11 +328,7 @@ pub const LAWS: &[Law] = &[
             laws::blend_is_unit_or_identity(&[(a, w[0]), (b, w[1]), (c, w[2])])
         }
     ),
-    law!(
-        "inverse_is_an_involution (edge grid)",
-        Proof(&["quat_inverse_is_an_involution"]),
-        |d| { laws::inverse_is_an_involution(edge_quat(d)) }
-    ),
+    law!("inverse_is_an_involution (edge grid)", Proof(&["quat_inverse_is_an_involution"]), edge_quat => laws::inverse_is_an_involution),
     law!(
         "product_with_inverse_is_real",
         Proof(&[
@@ -335,26 +338,10 @@ pub const LAWS: &[Law] = &[
         ]),
         |d| { laws::product_with_inverse_is_real(d.unit_quat()) }
     ),
-    law!(
-        "cn_gives_non_negative_w_and_the_same_rotation (edge grid)",
-        Proof(&["cn_gives_non_negative_w_and_the_same_rotation"]),
-        |d| { laws::cn_gives_non_negative_w_and_the_same_rotation(edge_quat(d)) }
-    ),
-    law!(
-        "rigid_product_with_inverse_is_identity",
-        NoHarness(BEYOND_THE_SOLVER),
-        |d| { laws::rigid_product_with_inverse_is_identity(rig_tform(d)) }
-    ),
-    law!(
-        "rigid_inverse_is_an_involution",
-        NoHarness(BEYOND_THE_SOLVER),
-        |d| { laws::rigid_inverse_is_an_involution(rig_tform(d)) }
-    ),
-    law!(
-        "rigid_inverse_matches_matrix_inverse",
-        NoHarness(BEYOND_THE_SOLVER),
-        |d| { laws::rigid_inverse_matches_matrix_inverse(rig_tform(d)) }
-    ),
+    law!("cn_gives_non_negative_w_and_the_same_rotation (edge grid)", Proof(&["cn_gives_non_negative_w_and_the_same_rotation"]), edge_quat => laws::cn_gives_non_negative_w_and_the_same_rotation),
+    law!("rigid_product_with_inverse_is_identity", NoHarness(BEYOND_THE_SOLVER), rig_tform => laws::rigid_product_with_inverse_is_identity),
+    law!("rigid_inverse_is_an_involution", NoHarness(BEYOND_THE_SOLVER), rig_tform => laws::rigid_inverse_is_an_involution),
+    law!("rigid_inverse_matches_matrix_inverse", NoHarness(BEYOND_THE_SOLVER), rig_tform => laws::rigid_inverse_matches_matrix_inverse),
     law!(
         "rigid_matrix_moves_points_as_the_transform",
         NoHarness(BEYOND_THE_SOLVER),
