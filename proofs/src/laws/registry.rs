@@ -85,6 +85,14 @@ fn edge_alpha(d: &mut Draws) -> f32 {
     ALPHAS.get(d.below(ALPHAS.len())).copied().unwrap_or(0.5)
 }
 
+/// One of the 24 orders of Euler angles.
+fn euler_order(d: &mut Draws) -> EulerRot {
+    EulerRot::ALL
+        .get(d.below(EulerRot::ALL.len()))
+        .copied()
+        .unwrap_or(EulerRot::XYZ)
+}
+
 /// `law` of a [`pair`] and an `alpha` drawn after it.
 fn on_pair(
     d: &mut Draws,
@@ -394,10 +402,7 @@ pub const LAWS: &[Law] = &[
         "euler_angles_give_back_the_rotation",
         NoHarness(BEYOND_THE_SOLVER),
         |d| {
-            let order = EulerRot::ALL
-                .get(d.below(EulerRot::ALL.len()))
-                .copied()
-                .unwrap_or(EulerRot::XYZ);
+            let order = euler_order(d);
             laws::euler_angles_give_back_the_rotation(d.unit_quat(), order)
         }
     ),
@@ -405,10 +410,7 @@ pub const LAWS: &[Law] = &[
         "euler_angles_give_back_the_rotation (gimbal lock)",
         NoHarness(BEYOND_THE_SOLVER),
         |d| {
-            let order = EulerRot::ALL
-                .get(d.below(EulerRot::ALL.len()))
-                .copied()
-                .unwrap_or(EulerRot::XYZ);
+            let order = euler_order(d);
             let pi = core::f32::consts::PI;
             let b = if d.below(2) == 0 { pi / 2.0 } else { -pi / 2.0 };
             let q = Quat::from_euler(order, d.uniform(-pi, pi), b, d.uniform(-pi, pi));
