@@ -27,9 +27,8 @@ first): `w6,x6,y6,z6,w9,x9,y9,z9`.
 """
 
 import math
-import sys
 
-from vqf_broad import BROAD_DT, read_trial
+from vqf_broad import BROAD_DT, run_on_trial
 
 # Standard gravity, for the accelerometer in g.
 GRAVITY = 9.81
@@ -66,13 +65,9 @@ def make_ahrs(imufusion):
     return ahrs, bias
 
 
-def main():
-    if len(sys.argv) != 2:
-        sys.exit("usage: fusion_broad.py TRIAL.csv[.gz]")
-    try:
-        data = read_trial(sys.argv[1])
-    except (OSError, ValueError) as e:
-        sys.exit(f"error: {e}")
+def fusion_estimates(data):
+    """Fusion's 6D and 9D estimates of the samples, one sample at a time,
+    each behind its own gyroscope bias algorithm."""
     import imufusion
     import numpy as np
 
@@ -82,13 +77,14 @@ def main():
     mag = np.ascontiguousarray(data[:, 6:9])
     six, six_bias = make_ahrs(imufusion)
     nine, nine_bias = make_ahrs(imufusion)
-    out = sys.stdout
-    out.write("w6,x6,y6,z6,w9,x9,y9,z9\n")
     for g, a, m in zip(gyr, acc, mag):
         six.update_no_magnetometer(six_bias.update(g), a)
         nine.update(nine_bias.update(g), a, m)
-        q = (*six.get_quaternion(), *nine.get_quaternion())
-        out.write(",".join(f"{v:.9g}" for v in q) + "\n")
+        yield (*six.get_quaternion(), *nine.get_quaternion())
+
+
+def main():
+    run_on_trial("fusion_broad.py", fusion_estimates)
 
 
 if __name__ == "__main__":

@@ -57,13 +57,25 @@ def read_trial(path):
     return data
 
 
-def main():
+def run_on_trial(script, estimates):
+    """The command line of the peers' scripts: one trial's path in, a header
+    and one line of 6D and 9D quaternions per sample out. `estimates(data)`
+    yields each sample's eight components from the trial's samples (as
+    `read_trial` gives them); a bad path or file is an error, not a trace."""
     if len(sys.argv) != 2:
-        sys.exit("usage: vqf_broad.py TRIAL.csv[.gz]")
+        sys.exit(f"usage: {script} TRIAL.csv[.gz]")
     try:
         data = read_trial(sys.argv[1])
     except (OSError, ValueError) as e:
         sys.exit(f"error: {e}")
+    out = sys.stdout
+    out.write("w6,x6,y6,z6,w9,x9,y9,z9\n")
+    for q in estimates(data):
+        out.write(",".join(f"{v:.9g}" for v in q) + "\n")
+
+
+def vqf_estimates(data):
+    """VQF's causal 6D and 9D estimates of the samples, batch by batch."""
     import numpy as np
     from vqf import VQF
 
@@ -71,10 +83,12 @@ def main():
     gyr, acc, mag = (np.ascontiguousarray(data[:, i:i + 3]) for i in (0, 3, 6))
     six = VQF(BROAD_DT).updateBatch(gyr, acc)["quat6D"]
     nine = VQF(BROAD_DT).updateBatch(gyr, acc, mag)["quat9D"]
-    out = sys.stdout
-    out.write("w6,x6,y6,z6,w9,x9,y9,z9\n")
     for a, b in zip(six, nine):
-        out.write(",".join(f"{v:.9g}" for v in (*a, *b)) + "\n")
+        yield (*a, *b)
+
+
+def main():
+    run_on_trial("vqf_broad.py", vqf_estimates)
 
 
 if __name__ == "__main__":
