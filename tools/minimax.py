@@ -68,20 +68,24 @@ def show(name, c, e):
 TINY = mp.mpf(10) ** -8  # the error weight vanishes at 0; start just above
 
 
+def odd(f):
+    """The function P to fit and its weight, for an odd `f(x) = x + x^3 P(x^2)`
+    approximated for relative error, both of `s = x^2`."""
+    g = lambda s: (f(mp.sqrt(s)) - mp.sqrt(s)) / (s * mp.sqrt(s))
+    w = lambda s: s * mp.sqrt(s) / f(mp.sqrt(s))
+    return g, w
+
+
 def atan():
     # atan(u) = u + u^3 P(u^2) on |u| <= tan(1/2), relative error.
     hi = mp.tan(mp.mpf(1) / 2) ** 2
-    g = lambda s: (mp.atan(mp.sqrt(s)) - mp.sqrt(s)) / (s * mp.sqrt(s))
-    w = lambda s: s * mp.sqrt(s) / mp.atan(mp.sqrt(s))
-    show("atan, degree 5 in u^2", *remez(g, w, 5, TINY, hi))
+    show("atan, degree 5 in u^2", *remez(*odd(mp.atan), 5, TINY, hi))
 
 
 def sin():
     # sin(r) = r + r^3 P(r^2) on |r| <= pi/4, relative error.
     hi = (mp.pi / 4) ** 2
-    g = lambda s: (mp.sin(mp.sqrt(s)) - mp.sqrt(s)) / (s * mp.sqrt(s))
-    w = lambda s: s * mp.sqrt(s) / mp.sin(mp.sqrt(s))
-    show("sin, degree 2 in r^2", *remez(g, w, 2, TINY, hi))
+    show("sin, degree 2 in r^2", *remez(*odd(mp.sin), 2, TINY, hi))
 
 
 def cos():
@@ -100,17 +104,13 @@ def show_f64(name, c, e):
 
 def atan_f64():
     # atan(u) = u + u^3 P(u^2) on 0 <= u <= 1, relative error.
-    g = lambda s: (mp.atan(mp.sqrt(s)) - mp.sqrt(s)) / (s * mp.sqrt(s))
-    w = lambda s: s * mp.sqrt(s) / mp.atan(mp.sqrt(s))
-    show_f64("atan on [0, 1], degree 7 in u^2", *remez(g, w, 7, TINY, mp.mpf(1)))
+    show_f64("atan on [0, 1], degree 7 in u^2", *remez(*odd(mp.atan), 7, TINY, mp.mpf(1)))
 
 
 def sin_f64():
     # sin(x) = x + x^3 P(x^2) on 0 <= x <= pi/2, relative error.
     hi = (mp.pi / 2) ** 2
-    g = lambda s: (mp.sin(mp.sqrt(s)) - mp.sqrt(s)) / (s * mp.sqrt(s))
-    w = lambda s: s * mp.sqrt(s) / mp.sin(mp.sqrt(s))
-    show_f64("sin on [0, pi/2], degree 3 in x^2", *remez(g, w, 3, TINY, hi))
+    show_f64("sin on [0, pi/2], degree 3 in x^2", *remez(*odd(mp.sin), 3, TINY, hi))
 
 
 def constants():
