@@ -21,10 +21,11 @@
 use crate::{Cvec3, Quat, RigTForm};
 
 /// `| |normalize(q)| - 1 |` for every finite non-zero `q`:
+/// `proofs/coq/normalize_norm.v`, on the certificate of
 /// `proofs/gappa/normalize.g` (and `normalize_scale.g` for the rescaled
 /// branches, which scale exactly or within 2^-150 and then compute the
 /// same).
-pub const NORMALIZE_NORM_PROVEN: f64 = 3.88e-7;
+pub const NORMALIZE_NORM_PROVEN: f64 = 2.391e-7;
 /// The length of the error vector of the product of two quaternions with
 /// components in [-1, 1] and squared norms within 2^-20 of 1 against the
 /// exact product of the same f32 inputs: `proofs/gappa/mul.g`.

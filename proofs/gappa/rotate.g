@@ -4,7 +4,7 @@
 # f32, round to nearest even.
 #
 # Domain: q with |q|^2 within 2^-20 (9.5e-7) of 1 (every output of
-# normalize: normalize.g bounds its norm's error by 3.88e-7), v scaled by
+# normalize: proofs/coq/normalize_norm.v bounds its norm's error by 2.391e-7), v scaled by
 # an exact power of two so that |v|^2 is in [1/4, 1] (every non-zero v has
 # such a scaling, and the arithmetic commutes with it where nothing
 # underflows).

@@ -223,23 +223,34 @@ fn the_contracts_reject_what_the_operations_must_not_give() {
     ));
 }
 
-/// The bound a Gappa model proves for an accuracy constant: the upper end
-/// of the goal that the model's `#!` line for the constant names
-/// (`#! bound NAME QUANTITY in [LO, HI] ...`; `cargo xtask prove` checks
-/// that it is a goal the certificate proves).
+/// The bound a Gappa model or a Coq law proves for an accuracy constant:
+/// the upper end of the goal that the model's `#!` line for the constant
+/// names (`#! bound NAME QUANTITY in [LO, HI] ...`), or the bound of the
+/// theorem a law's `(*!` line names (`(*! bound NAME THEOREM <= VALUE
+/// ...`); `cargo xtask prove` checks that the certificate proves that goal
+/// and that the theorem states that bound.
 fn proven(model: &str, constant: &str) -> f64 {
-    let path = format!("{}/gappa/{model}", env!("CARGO_MANIFEST_DIR"));
+    let folder = if model.ends_with(".v") {
+        "coq"
+    } else {
+        "gappa"
+    };
+    let path = format!("{}/{folder}/{model}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     text.lines()
-        .filter_map(|line| line.strip_prefix("#!"))
+        .filter_map(|line| line.strip_prefix("#!").or_else(|| line.strip_prefix("(*!")))
         .filter(|line| line.split_whitespace().nth(1) == Some(constant))
         .find_map(|line| {
+            // A law: `bound NAME THEOREM <= VALUE what`.
+            if let Some((_, value)) = line.split_once(" <= ") {
+                return value.split_whitespace().next()?.parse().ok();
+            }
             let (_, interval) = line.split_once(" in [")?;
             let (ends, _) = interval.split_once(']')?;
             let (_, hi) = ends.split_once(',')?;
             hi.trim().parse().ok()
         })
-        .unwrap_or_else(|| panic!("{path} has no #! line for {constant}"))
+        .unwrap_or_else(|| panic!("{path} has no claim for {constant}"))
 }
 
 /// The ends of a hypothesis `NAME in [LO, HI]` of a model, as decimals.
@@ -275,7 +286,7 @@ fn the_contracts_state_the_bounds_gappa_proves() {
         (
             "NORMALIZE_NORM_PROVEN",
             c::NORMALIZE_NORM_PROVEN,
-            "normalize.g",
+            "normalize_norm.v",
             "NORMALIZE_MAX_NORM_ERROR",
         ),
         (

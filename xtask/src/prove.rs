@@ -31,6 +31,12 @@
 //! and laws are printed as given that hint. A certificate that names a rule
 //! Gappa has no Coq proof for (`UNKNOWN_...`) fails.
 //!
+//! Then the laws of `proofs/coq/` (`laws`): Coq files that require the
+//! certificates just checked and prove what interval arithmetic cannot
+//! (a weighted average of rounding errors); a law's claim
+//! `(*! bound NAME THEOREM <= VALUE what *)` counts when coqc has checked
+//! the theorem, whose statement ends with that bound.
+//!
 //! Each constant's doc comment in `src/accuracy.rs` says how it is known, in
 //! a line `Known: proven ...`, `Known: swept ...` (every f32 of its domain,
 //! by an exhaustive test) or `Known: measured ...`. This fails when a
@@ -42,6 +48,7 @@
 
 mod checks;
 mod goals;
+mod laws;
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -220,7 +227,10 @@ fn cache_dir() -> Result<PathBuf> {
 }
 
 /// Checks a certificate with coqc, unless the same certificate was checked
-/// before (`cache_dir`). Returns whether coqc ran.
+/// before (`cache_dir`). Returns whether coqc ran. Either way the compiled
+/// certificate (`STEM.vo`, logical name `Laws.STEM`) is left in `work`,
+/// where the laws of `proofs/coq/` require it: the cache keeps it beside
+/// the certificate it was compiled from.
 fn check_certificate(stem: &str, script: &str, work: &Path) -> Result<bool> {
     if script.contains("Admitted") || script.contains("Axiom") || script.contains("UNKNOWN") {
         bail!("{stem}: the certificate admits something, or uses a rule without a Coq proof");
@@ -234,15 +244,28 @@ fn check_certificate(stem: &str, script: &str, work: &Path) -> Result<bool> {
     (script, &coq).hash(&mut h);
     let cache = cache_dir()?;
     let cached = cache.join(format!("{stem}-{:016x}.v", h.finish()));
-    if std::fs::read_to_string(&cached).is_ok_and(|c| c == script) {
+    let cached_vo = cached.with_extension("vo");
+    let vo = work.join(format!("{stem}.vo"));
+    if std::fs::read_to_string(&cached).is_ok_and(|c| c == script)
+        && std::fs::copy(&cached_vo, &vo).is_ok()
+    {
         return Ok(false);
     }
     let v = work.join(format!("{stem}.v"));
     std::fs::write(&v, script).with_context(|| format!("{}", v.display()))?;
-    output(Command::new("coqc").arg(&v).current_dir(work))
-        .with_context(|| format!("coqc rejected the certificate of {stem}.g (Debian: apt-get install coq libcoq-flocq libcoq-gappa)"))?;
+    output(
+        Command::new("coqc")
+            .arg("-Q")
+            .arg(work)
+            .arg(laws::PREFIX)
+            .arg(&v)
+            .current_dir(work),
+    )
+    .with_context(|| format!("coqc rejected the certificate of {stem}.g (Debian: apt-get install coq libcoq-flocq libcoq-gappa)"))?;
     // A cache that cannot be written only costs time next run.
-    let _ = std::fs::create_dir_all(&cache).and_then(|()| std::fs::write(&cached, script));
+    let _ = std::fs::create_dir_all(&cache)
+        .and_then(|()| std::fs::copy(&vo, &cached_vo))
+        .and_then(|_| std::fs::write(&cached, script));
     Ok(true)
 }
 
@@ -649,7 +672,17 @@ pub fn prove_all() -> Result<()> {
     let models = models_in(&dir)?;
     correspondence(&root, &dir)?;
     let work = tempfile::tempdir().context("a directory for the certificates")?;
-    let proven = prove_in_parallel(&models, work.path())?;
+    let mut proven = prove_in_parallel(&models, work.path())?;
+    // The laws proven in Coq on the certificates just checked.
+    let stems: Vec<String> = proven
+        .iter()
+        .map(|p| p.model.trim_end_matches(".g").to_owned())
+        .collect();
+    proven.extend(laws::prove_laws(
+        &root.join("proofs/coq"),
+        work.path(),
+        &stems,
+    )?);
 
     let accuracy =
         std::fs::read_to_string(root.join("src/accuracy.rs")).context("src/accuracy.rs")?;
