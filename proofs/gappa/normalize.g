@@ -48,5 +48,8 @@ sa + sb -> T - (sc + sd);
 sa + sb + sc -> T - sd;
 T -> S + (T - S) / S * S;
 (s - S) / S -> (s - T) / S + (T - S) / S;
+# The side conditions' sum of squares (`#! side`, used only by the model of
+# the side conditions, which has no other hint) is S.
+#! side b * b + a * a + d * d + c * c -> S;
 # Split the sum of squares where its binade, or that of a partial sum, changes.
 $ S in (1.0001, 1.5, 1.999, 2, 2.001, 3, 3.99);
