@@ -533,6 +533,42 @@ fn rotation_is_rotate_g() {
     }
 }
 
+/// matrix_entry.g's two entries, renamed and with `w` negated, are all
+/// nine entries of the rotation block of `Matrix4::from_quat`.
+#[test]
+fn rotation_matrix_is_matrix_entry_g() {
+    let Some(m) = model("matrix_entry", Code::F32) else {
+        return;
+    };
+    assert_eq!(m.inputs, ["w", "x", "y", "z"]);
+    for (i, mut d) in draws() {
+        let [w, x, y, z]: [f32; 4] = if i % 2 == 0 {
+            let q = d.unit_quat();
+            [q.w, q.x, q.y, q.z]
+        } else {
+            core::array::from_fn(|_| component(&mut d))
+        };
+        let cols = rigtform::Matrix4::from_quat(quat([w, x, y, z])).cols;
+        // (column, row) of the code's matrix, the model's output, and the
+        // model's inputs w, x, y, z.
+        let entries = [
+            (0, 0, "d", [w, x, y, z]),
+            (1, 1, "d", [w, y, x, z]),
+            (2, 2, "d", [w, z, x, y]),
+            (0, 1, "o", [w, x, y, z]),
+            (1, 0, "o", [-w, x, y, z]),
+            (0, 2, "o", [-w, x, z, y]),
+            (2, 0, "o", [w, x, z, y]),
+            (1, 2, "o", [w, y, z, x]),
+            (2, 1, "o", [-w, y, z, x]),
+        ];
+        for (c, r, name, v) in entries {
+            let code = cols[c].to_array()[r];
+            check(&m, &m.run(&v.map(f64::from)), name, code, &v);
+        }
+    }
+}
+
 #[test]
 fn product_with_the_inverse_is_quat_inv_g() {
     let Some(m) = model("quat_inv", Code::F32) else {
