@@ -120,6 +120,49 @@ mod tests {
         assert!(worst <= accuracy::ATAN2_MAX_ABS_ERROR as f64, "{worst}");
     }
 
+    /// The largest absolute error of `sin_cos` over `x` and `-x` for every
+    /// `step`-th f32 `x` of [0, 10], and the relative error of `tan` over
+    /// every `step`-th f32 of [0.0087, 1.5621] (half of a field of view
+    /// between 1 and 179 degrees), checked against `SIN_COS_MAX_ABS_ERROR`
+    /// and `TAN_MAX_REL_ERROR`.
+    fn sin_cos_and_tan_sweep(step: usize) {
+        let mut worst: (f64, f32) = (0.0, 0.0);
+        for x in sweep::floats(0.0, 10.0, step).flat_map(|x| [x, -x]) {
+            let (s, c) = sin_cos(x);
+            let err = (s as f64 - (x as f64).sin())
+                .abs()
+                .max((c as f64 - (x as f64).cos()).abs());
+            if err > worst.0 || err.is_nan() {
+                worst = (err, x);
+            }
+        }
+        std::println!(
+            "sin_cos, [-10, 10]: max absolute error {:.4e} at {:e}",
+            worst.0,
+            worst.1
+        );
+        assert!(
+            worst.0 <= accuracy::SIN_COS_MAX_ABS_ERROR as f64,
+            "{worst:?}"
+        );
+        let mut worst: (f64, f32) = (0.0, 0.0);
+        for x in sweep::floats(0.0087, 1.5621, step) {
+            let want = (x as f64).tan();
+            let err = (tan(x) as f64 - want).abs() / want;
+            if err > worst.0 || err.is_nan() {
+                worst = (err, x);
+            }
+        }
+        std::println!(
+            "tan, [0.0087, 1.5621]: max relative error {:.4e} at {:e}",
+            worst.0,
+            worst.1
+        );
+        assert!(worst.0 <= accuracy::TAN_MAX_REL_ERROR as f64, "{worst:?}");
+    }
+
+    sweep::sweep_tests!(sin_cos_and_tan_sweep);
+
     /// The largest absolute error of `sin_cos` over 400,000 points of
     /// [lo, hi], checked against `SIN_COS_MAX_ABS_ERROR`.
     fn sweep_sin_cos_over(what: &str, lo: f64, hi: f64) {
@@ -135,26 +178,9 @@ mod tests {
     }
 
     #[test]
-    fn sweep_sin_cos() {
-        sweep_sin_cos_over("sin_cos", -10.0, 10.0);
-    }
-
-    #[test]
     fn sweep_sin_cos_of_large_arguments() {
         // The turns pow and slerp hand to sin_cos with large exponents.
         sweep_sin_cos_over("sin_cos of large arguments", -70_000.0, 70_000.0);
-    }
-
-    #[test]
-    fn sweep_tan() {
-        let mut worst: f64 = 0.0;
-        // Half of a field of view between 1 and 179 degrees.
-        for x in spread(0.0087, 1.5621, 100_000) {
-            let want = (x as f64).tan();
-            worst = worst.max((tan(x) as f64 - want).abs() / want);
-        }
-        std::println!("tan: max relative error {worst:.3e}");
-        assert!(worst <= accuracy::TAN_MAX_REL_ERROR as f64, "{worst}");
     }
 
     #[test]

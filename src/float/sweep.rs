@@ -2,11 +2,15 @@
 //! the arguments they sweep, and the largest error of a sweep checked
 //! against its bound (as libm tests its own kernels).
 
+/// The ulp of `want` rounded to f32: the gap above its magnitude.
+pub(crate) fn ulp(want: f64) -> f64 {
+    let w = (want as f32).abs();
+    (f32::from_bits(w.to_bits() + 1) - w) as f64
+}
+
 /// Distance from `got` to the exact `want`, in ulps of `want` rounded to f32.
 pub(crate) fn ulps(got: f32, want: f64) -> f64 {
-    let w = want as f32;
-    let ulp = (f32::from_bits(w.abs().to_bits() + 1) - w.abs()) as f64;
-    (got as f64 - want).abs() / ulp
+    (got as f64 - want).abs() / ulp(want)
 }
 
 /// `n` points evenly spread over [lo, hi], endpoints included.
