@@ -59,7 +59,7 @@
 //! | [`CATMULL_ROM_MAX_ANGLE_ERROR`] | 4.8e-7 |
 //! | [`SAMPLER_LINEAR_MAX_ANGLE_ERROR`] | 5.6e-7 |
 //! | [`SAMPLER_CUBIC_MAX_ANGLE_ERROR`] | 1.0e-6 |
-//! | [`SAMPLER_VEC3_MAX_REL_ERROR`] | 7.2e-7 |
+//! | [`SAMPLER_VEC3_MAX_REL_ERROR`] | 2.5e-6 |
 //! | [`ANGLE_BETWEEN_MAX_ERROR`] | 4.2e-7 |
 //! | [`PROJECT_MAX_REL_ERROR`] | 4.5e-7 |
 //! | [`MATRIX3_INVERSE_MAX_REL_ERROR`] | 2.5e-7 |
@@ -417,10 +417,17 @@ pub const SAMPLER_CUBIC_MAX_ANGLE_ERROR: f32 = 1.0e-6; // 8.091e-7 (4,000,000 sa
 /// relative to the largest component magnitude among the segment's two
 /// values and its two tangents times the interval (values and tangents with
 /// components in [-100, 100], times as for
-/// [`SAMPLER_LINEAR_MAX_ANGLE_ERROR`]).
+/// [`SAMPLER_LINEAR_MAX_ANGLE_ERROR`], and for any values and times where
+/// nothing underflows or overflows and `t - t0` is at least 2^-126).
 ///
-/// Known: measured: the largest error over the draws in its doc, rounded up.
-pub const SAMPLER_VEC3_MAX_REL_ERROR: f32 = 7.2e-7; // 5.774e-7 (4,000,000 samples of each)
+/// Known: proven: `proofs/gappa/sampler_linear.g` proves 5.12e-7 for
+/// LINEAR and `sampler_cubic.g` 2.48e-6 for CUBICSPLINE (the Hermite
+/// weights' errors, up to 6.04e-7 each, add where the two values are
+/// opposite), given the relative error of the segment's `u` (three
+/// roundings, at most 1.7882e-7, on paper). A search
+/// (`deep_vector_sampler_search` in `proofs/tests/worst_cases.rs`) finds
+/// 6.628e-7, so the bound is 3.7 times what is found.
+pub const SAMPLER_VEC3_MAX_REL_ERROR: f32 = 2.5e-6; // 5.774e-7 (4,000,000 samples of each), 6.628e-7 (search), 2.48e-6 proven
 /// Error of `Matrix4::inverse` relative to the inverse's size (Frobenius
 /// norm), per unit of the matrix's condition number `|M| |M^-1|`: measured on
 /// random 4x4 matrices with entries in [-1, 1] and condition below 1e4.

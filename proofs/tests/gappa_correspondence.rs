@@ -569,6 +569,65 @@ fn rotation_matrix_is_matrix_entry_g() {
     }
 }
 
+/// sampler_linear.g and sampler_cubic.g, component by component, against
+/// a Cvec3 `Sampler` of one segment at a time inside it. The segment's
+/// `td = t1 - t0` and `u = (t - t0) / td`, which the models take as
+/// inputs, are the sampler's glue, written out here; the result's bits are
+/// the library's.
+#[test]
+fn vector_samplers_are_sampler_linear_g_and_sampler_cubic_g() {
+    use rigtform::animation::{Interpolation, Sampler};
+    let (Some(linear), Some(cubic)) = (
+        model("sampler_linear", Code::F32),
+        model("sampler_cubic", Code::F32),
+    ) else {
+        return;
+    };
+    assert_eq!(linear.inputs, ["a", "b", "u"]);
+    assert_eq!(cubic.inputs, ["p0", "b0", "p1", "a1", "u", "td"]);
+    for (i, mut d) in draws() {
+        let t0 = if i % 7 == 0 {
+            0.0
+        } else {
+            d.uniform(0.0, 10.0)
+        };
+        let t1 = t0 + d.uniform(0.01, 2.0);
+        let t = d.uniform(t0, t1);
+        if !(t0 < t && t < t1) {
+            continue;
+        }
+        // The sampler takes finite values only.
+        let finite = |c: f32| if c.is_finite() { c } else { 1.5 };
+        let vector = |d: &mut Draws| {
+            let raw = finite(component(d));
+            Cvec3::new(d.uniform(-100.0, 100.0), raw, d.uniform(-1.0, 1.0))
+        };
+        let values: [Cvec3; 6] = core::array::from_fn(|_| vector(&mut d));
+        let times = [t0, t1];
+        let (td, u) = (t1 - t0, (t - t0) / (t1 - t0));
+        let line = Sampler::new(Interpolation::Linear, &times, &values[..2])
+            .expect("two keys")
+            .sample(t);
+        let spline = Sampler::new(Interpolation::CubicSpline, &times, &values)
+            .expect("two keys")
+            .sample(t);
+        let [_, p0, b0, a1, p1, _] = values.map(|v| v.to_array());
+        for c in 0..3 {
+            let v = [values[0].to_array()[c], values[1].to_array()[c], u];
+            check(
+                &linear,
+                &linear.run(&v.map(f64::from)),
+                "r",
+                line.to_array()[c],
+                &v,
+            );
+            let v = [p0[c], b0[c], p1[c], a1[c], u, td];
+            let code = spline.to_array()[c];
+            check(&cubic, &cubic.run(&v.map(f64::from)), "c", code, &v);
+        }
+    }
+}
+
 #[test]
 fn product_with_the_inverse_is_quat_inv_g() {
     let Some(m) = model("quat_inv", Code::F32) else {

@@ -1,4 +1,5 @@
-//! Searches for the worst cases of the norm and rotation laws: from seeded
+//! Searches for the worst cases of the norm and rotation laws, and of the
+//! vector sampler's bound (`vector_sampler_search`): from seeded
 //! starting points, each climbs towards the inputs with the largest error,
 //! changing one input's last bits at a time and keeping a step only if it
 //! makes the error larger. Errors are measured in f64 from the f32 results
@@ -13,7 +14,9 @@
 //! off by up to `NORMALIZE_MAX_NORM_ERROR`, which the product and the
 //! rotation carry through).
 
-use rigtform::accuracy::{NORMALIZE_MAX_NORM_ERROR, ROTATE_MAX_REL_ERROR, UNIT_NORM_ERROR};
+use rigtform::accuracy::{
+    NORMALIZE_MAX_NORM_ERROR, ROTATE_MAX_REL_ERROR, SAMPLER_VEC3_MAX_REL_ERROR, UNIT_NORM_ERROR,
+};
 use rigtform::{Cvec3, Quat};
 use rigtform_proofs::draw::Draws;
 
@@ -201,4 +204,91 @@ fn worst_cases_found_stay_within_the_constants() {
 #[ignore = "a minute in release: the search the constants' docs quote"]
 fn deep_search_for_worst_cases() {
     check(&search(400_000, 3_000, 1));
+}
+
+/// A CUBICSPLINE or LINEAR Cvec3 sampler of one segment, at `t`, against
+/// the exact evaluation of the same f32 values, times and tangents,
+/// relative to the largest term, as `SAMPLER_VEC3_MAX_REL_ERROR` measures
+/// it: `[p0, b0, p1, a1, t0, t1, t]` in x (the other components 0), 0
+/// outside the constant's domain (components up to 100, intervals from
+/// 0.01 to 2 starting in [0, 18]).
+fn sampler_error(v: [f32; 7]) -> f64 {
+    use rigtform::animation::{Interpolation, Sampler};
+    let [p0, b0, p1, a1, t0, t1, t] = v;
+    let inside = (0.0..=18.0).contains(&t0)
+        && (0.01..=2.0).contains(&(t1 - t0))
+        && t0 < t
+        && t < t1
+        && [p0, b0, p1, a1].iter().all(|c| c.abs() <= 100.0);
+    if !inside {
+        return 0.0;
+    }
+    let x = |c: f32| Cvec3::new(c, 0.0, 0.0);
+    let values = [x(0.0), x(p0), x(b0), x(a1), x(p1), x(0.0)];
+    let times = [t0, t1];
+    let sample = |kind, values: &[Cvec3]| {
+        Sampler::new(kind, &times, values).map_or(f64::NAN, |s| f64::from(s.sample(t).x))
+    };
+    let td = f64::from(t1) - f64::from(t0);
+    let u = (f64::from(t) - f64::from(t0)) / td;
+    let (uu, uuu) = (u * u, u * u * u);
+    let basis = [
+        2.0 * uuu - 3.0 * uu + 1.0,
+        uuu - 2.0 * uu + u,
+        -2.0 * uuu + 3.0 * uu,
+        uuu - uu,
+    ];
+    let terms = [p0, b0, p1, a1].map(f64::from);
+    let terms = [terms[0], terms[1] * td, terms[2], terms[3] * td];
+    let exact: f64 = (0..4).map(|i| basis[i] * terms[i]).sum();
+    let largest = terms.iter().fold(0f64, |m, c| m.max(c.abs()));
+    let cubic = (sample(Interpolation::CubicSpline, &values) - exact).abs() / largest;
+    let line = f64::from(p0) * (1.0 - u) + f64::from(p1) * u;
+    let linear = (sample(Interpolation::Linear, &[x(p0), x(p1)]) - line).abs()
+        / f64::from(p0.abs().max(p1.abs()));
+    cubic.max(linear)
+}
+
+/// The largest of `climbs` climbs of `sampler_error`, from values of
+/// either sign up to 100, half of them with the two values opposite (where
+/// the Hermite weights' errors add) and tangents 0 or up to 100.
+fn vector_sampler_search(climbs: usize, seed: u64) -> f64 {
+    let mut d = Draws::new(seed);
+    let mut worst = 0f64;
+    for _ in 0..climbs {
+        let t0 = d.uniform(0.0, 10.0);
+        let t1 = t0 + d.uniform(0.01, 2.0);
+        let t = d.uniform(t0, t1);
+        let p0 = d.uniform(-100.0, 100.0);
+        let p1 = if d.below(2) == 0 {
+            -p0
+        } else {
+            d.uniform(-100.0, 100.0)
+        };
+        let mut tangent = || {
+            if d.below(2) == 0 {
+                0.0
+            } else {
+                d.uniform(-100.0, 100.0)
+            }
+        };
+        let start = [p0, tangent(), p1, tangent(), t0, t1, t];
+        worst = worst.max(climb(&mut d, start, 400, &sampler_error).1);
+    }
+    println!(
+        "vector sampler, relative to the largest term: {worst:.4e} (SAMPLER_VEC3_MAX_REL_ERROR {:e})",
+        SAMPLER_VEC3_MAX_REL_ERROR
+    );
+    worst
+}
+
+#[test]
+fn vector_sampler_worst_case_found_stays_within_its_constant() {
+    assert!(vector_sampler_search(500, 9) <= f64::from(SAMPLER_VEC3_MAX_REL_ERROR));
+}
+
+#[test]
+#[ignore = "seconds in release: the search the constant's doc quotes"]
+fn deep_vector_sampler_search() {
+    assert!(vector_sampler_search(100_000, 9) <= f64::from(SAMPLER_VEC3_MAX_REL_ERROR));
 }
