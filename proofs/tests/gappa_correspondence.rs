@@ -436,7 +436,18 @@ fn draws() -> impl Iterator<Item = (usize, Draws)> {
 
 #[test]
 fn product_is_mul_g() {
-    let Some(m) = model("mul", Code::F32) else {
+    product_is("mul");
+}
+
+/// mul_angle.g computes what mul.g does, with another goal.
+#[test]
+fn product_is_mul_angle_g() {
+    product_is("mul_angle");
+}
+
+/// The model `name` computes the Hamilton product's bits.
+fn product_is(name: &'static str) {
+    let Some(m) = model(name, Code::F32) else {
         return;
     };
     assert_eq!(m.inputs, ["aw", "ax", "ay", "az", "bw", "bx", "by", "bz"]);

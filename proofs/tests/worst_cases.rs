@@ -1,5 +1,6 @@
-//! Searches for the worst cases of the norm and rotation laws, and of the
-//! vector sampler's bound (`vector_sampler_search`): from seeded
+//! Searches for the worst cases of the norm and rotation laws, of the
+//! product's angle (`product_angle_search`) and of the vector sampler's
+//! bound (`vector_sampler_search`): from seeded
 //! starting points, each climbs towards the inputs with the largest error,
 //! changing one input's last bits at a time and keeping a step only if it
 //! makes the error larger. Errors are measured in f64 from the f32 results
@@ -15,7 +16,8 @@
 //! rotation carry through).
 
 use rigtform::accuracy::{
-    NORMALIZE_MAX_NORM_ERROR, ROTATE_MAX_REL_ERROR, SAMPLER_VEC3_MAX_REL_ERROR, UNIT_NORM_ERROR,
+    MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, ROTATE_MAX_REL_ERROR,
+    SAMPLER_VEC3_MAX_REL_ERROR, UNIT_NORM_ERROR,
 };
 use rigtform::{Cvec3, Quat};
 use rigtform_proofs::draw::Draws;
@@ -291,4 +293,62 @@ fn vector_sampler_worst_case_found_stays_within_its_constant() {
 #[ignore = "seconds in release: the search the constant's doc quotes"]
 fn deep_vector_sampler_search() {
     assert!(vector_sampler_search(100_000, 9) <= f64::from(SAMPLER_VEC3_MAX_REL_ERROR));
+}
+
+/// The angle between `a * b` and the exact product of the same inputs, as
+/// rotations: twice the angle between them as 4-vectors, from the error's
+/// part across the exact product. 0 outside `MUL_MAX_ANGLE_ERROR`'s domain
+/// (components in [-1, 1], squared norms within 2^-20 of 1).
+fn product_angle(v: [f32; 8]) -> f64 {
+    let (a, b) = (
+        Quat::from_wxyz(v[0], v[1], v[2], v[3]),
+        Quat::from_wxyz(v[4], v[5], v[6], v[7]),
+    );
+    let inside = |q: Quat| {
+        (norm64(q).powi(2) - 1.0).abs() <= 2f64.powi(-20) && q64(q).iter().all(|c| c.abs() <= 1.0)
+    };
+    if !(inside(a) && inside(b)) {
+        return 0.0;
+    }
+    let (x, y) = (q64(a), q64(b));
+    let exact = [
+        x[0] * y[0] - x[1] * y[1] - x[2] * y[2] - x[3] * y[3],
+        x[0] * y[1] + x[1] * y[0] + x[2] * y[3] - x[3] * y[2],
+        x[0] * y[2] - x[1] * y[3] + x[2] * y[0] + x[3] * y[1],
+        x[0] * y[3] + x[1] * y[2] - x[2] * y[1] + x[3] * y[0],
+    ];
+    let got = q64(a * b);
+    let length = |v: &[f64; 4]| v.iter().map(|c| c * c).sum::<f64>().sqrt();
+    let e: [f64; 4] = core::array::from_fn(|i| got[i] - exact[i]);
+    let along = (0..4).map(|i| e[i] * exact[i]).sum::<f64>() / length(&exact);
+    let across: [f64; 4] = core::array::from_fn(|i| e[i] - along * exact[i] / length(&exact));
+    2.0 * (length(&across) / length(&got)).asin()
+}
+
+/// The largest of `climbs` climbs of `product_angle` from pairs of f32
+/// roundings of unit quaternions.
+fn product_angle_search(climbs: usize, seed: u64) -> f64 {
+    let mut d = Draws::new(seed);
+    let mut worst = 0f64;
+    for _ in 0..climbs {
+        let (a, b) = (d.unit_quat(), d.unit_quat());
+        let start = [a.w, a.x, a.y, a.z, b.w, b.x, b.y, b.z];
+        worst = worst.max(climb(&mut d, start, 400, &product_angle).1);
+    }
+    println!(
+        "angle of a * b: {worst:.4e} (MUL_MAX_ANGLE_ERROR {:e})",
+        MUL_MAX_ANGLE_ERROR
+    );
+    worst
+}
+
+#[test]
+fn product_angle_found_stays_within_its_constant() {
+    assert!(product_angle_search(500, 7) <= f64::from(MUL_MAX_ANGLE_ERROR));
+}
+
+#[test]
+#[ignore = "seconds in release: the search the constant's doc quotes"]
+fn deep_product_angle_search() {
+    assert!(product_angle_search(50_000, 7) <= f64::from(MUL_MAX_ANGLE_ERROR));
 }
