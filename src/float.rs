@@ -120,45 +120,47 @@ mod tests {
         assert!(worst <= accuracy::ATAN2_MAX_ABS_ERROR as f64, "{worst}");
     }
 
-    /// The largest absolute error of `sin_cos` over `x` and `-x` for every
+    /// The largest `error` over `xs` and where it occurs (a NaN error
+    /// counts as the worst), printed and checked against `bound`.
+    fn check_largest(
+        what: &str,
+        xs: impl Iterator<Item = f32>,
+        error: impl Fn(f32) -> f64,
+        bound: f32,
+    ) {
+        let mut worst: (f64, f32) = (0.0, 0.0);
+        for x in xs {
+            let e = error(x);
+            if e > worst.0 || e.is_nan() {
+                worst = (e, x);
+            }
+        }
+        std::println!("{what}: max {:.4e} at {:e}", worst.0, worst.1);
+        assert!(worst.0 <= bound as f64, "{what}: {worst:?}");
+    }
+
+    /// The absolute error of `sin_cos` over `x` and `-x` for every
     /// `step`-th f32 `x` of [0, 10], and the relative error of `tan` over
     /// every `step`-th f32 of [0.0087, 1.5621] (half of a field of view
     /// between 1 and 179 degrees), checked against `SIN_COS_MAX_ABS_ERROR`
     /// and `TAN_MAX_REL_ERROR`.
     fn sin_cos_and_tan_sweep(step: usize) {
-        let mut worst: (f64, f32) = (0.0, 0.0);
-        for x in sweep::floats(0.0, 10.0, step).flat_map(|x| [x, -x]) {
-            let (s, c) = sin_cos(x);
-            let err = (s as f64 - (x as f64).sin())
-                .abs()
-                .max((c as f64 - (x as f64).cos()).abs());
-            if err > worst.0 || err.is_nan() {
-                worst = (err, x);
-            }
-        }
-        std::println!(
-            "sin_cos, [-10, 10]: max absolute error {:.4e} at {:e}",
-            worst.0,
-            worst.1
+        check_largest(
+            "sin_cos, [-10, 10], absolute error",
+            sweep::floats(0.0, 10.0, step).flat_map(|x| [x, -x]),
+            |x| {
+                let (s, c) = sin_cos(x);
+                let x = x as f64;
+                (s as f64 - x.sin()).abs().max((c as f64 - x.cos()).abs())
+            },
+            accuracy::SIN_COS_MAX_ABS_ERROR,
         );
-        assert!(
-            worst.0 <= accuracy::SIN_COS_MAX_ABS_ERROR as f64,
-            "{worst:?}"
+        check_largest(
+            "tan, [0.0087, 1.5621], relative error",
+            sweep::floats(0.0087, 1.5621, step),
+            |x| (tan(x) as f64 / (x as f64).tan() - 1.0).abs(),
+            accuracy::TAN_MAX_REL_ERROR,
         );
-        let mut worst: (f64, f32) = (0.0, 0.0);
-        for x in sweep::floats(0.0087, 1.5621, step) {
-            let want = (x as f64).tan();
-            let err = (tan(x) as f64 - want).abs() / want;
-            if err > worst.0 || err.is_nan() {
-                worst = (err, x);
-            }
-        }
-        std::println!(
-            "tan, [0.0087, 1.5621]: max relative error {:.4e} at {:e}",
-            worst.0,
-            worst.1
-        );
-        assert!(worst.0 <= accuracy::TAN_MAX_REL_ERROR as f64, "{worst:?}");
     }
 
     sweep::sweep_tests!(sin_cos_and_tan_sweep);
