@@ -7,6 +7,10 @@ use super::head_tail::{PIO2_HI, PIO2_LO, PIO4_HI, PIO4_LO, PI_HI, PI_LO};
 /// tan(1/2), rounded to f32: the bound of [`atan_poly`]'s range.
 pub(super) const TAN_HALF: f32 = 0.546_302_5;
 
+/// 2^60: how much [`atan2_kernel`] scales its arguments for its branch
+/// tests where `|y| <= 1`.
+const TINY_SCALE: f32 = f32::from_bits((127 + 60) << 23);
+
 /// Minimax coefficients of `(atan(u) - u) / u^3` as a polynomial in `u^2`,
 /// on |u| <= tan(1/2), for relative error (`tools/minimax.py atan`):
 /// the approximation error is 7.7e-10 of the result, 1 % of an ulp.
@@ -63,12 +67,17 @@ pub(crate) fn atan2_kernel(y: f32, x: f32) -> f32 {
     let a = select(a == 0.0 && b == 0.0, 1.0, a);
     // The angle of (a, b) in [0, pi/2] as hi + atan(num / den) + lo: at
     // most 1/2 rad, at least pi/2 - 1/2, or between, where a and b are
-    // within a factor 2 of each other (and b + a can only overflow if b is
-    // huge, where a quarter of each is exact). Selected by bit masks, which
-    // compile to no branch.
-    let (low, high) = (b <= a * TAN_HALF, a <= b * TAN_HALF);
-    let quarter = select(b > 1e37, 0.25, 1.0);
-    let (qb, qa) = (b * quarter, a * quarter);
+    // within a factor 2 of each other. Selected by bit masks, which
+    // compile to no branch. The branch tests and the middle branch take
+    // both scaled, exactly where it matters: by 2^60 for `b` up to 1, so
+    // that the tests' products by tan(1/2) are never subnormal (two equal
+    // subnormals would otherwise pass for a ratio below tan(1/2)), and by
+    // 1/4 above, so that `b + a` cannot overflow. Where a scaled `a`
+    // overflows or loses bits, it is far from `b` and the tests' outcome
+    // is the same.
+    let scale = select(b > 1.0, 0.25, TINY_SCALE);
+    let (qb, qa) = (b * scale, a * scale);
+    let (low, high) = (qb <= qa * TAN_HALF, qa <= qb * TAN_HALF);
     let num = select(low, b, select(high, -a, qb - qa));
     let den = select(low, a, select(high, b, qb + qa));
     let hi = select(low, 0.0, select(high, PIO2_HI, PIO4_HI));
@@ -138,12 +147,14 @@ mod tests {
     /// such a pair lies between those of the ends of `u`'s interval:
     ///
     /// - `b / a` (up to 1/2 rad) and `-(a / b)` (from pi/2 - 1/2 on) are
-    ///   one correctly rounded division of the arguments (scaled by an
-    ///   exact quarter where huge), so the exact ratio is any real that
-    ///   rounds to `t = |u|`, up to tan(1/2) (1 + 2^-24) (the branch's
-    ///   test `b <= a tan(1/2)` rounds its product once);
-    /// - between, `a` and `b` lie within a factor 2 of each other, `b - a`
-    ///   is exact (Sterbenz) and `b + a` and the quotient round once each:
+    ///   one correctly rounded division of the arguments, so the exact
+    ///   ratio is any real that rounds to `t = |u|`, up to tan(1/2)
+    ///   (1 + 2^-24) (the branch's test `b <= a tan(1/2)`, on the scaled
+    ///   arguments, rounds its product once, never subnormal where the
+    ///   outcome depends on it);
+    /// - between, `a` and `b` (scaled exactly) lie within a factor 2 of
+    ///   each other, `b - a` is exact (Sterbenz) and `b + a` and the
+    ///   quotient round once each:
     ///   the exact `(b - a) / (b + a)` is within a factor `(1 + 2^-24) /
     ///   (1 - 2^-24)` of `u`, and at most that of the ratio
     ///   tan(1/2) (1 - 2^-24) in magnitude (0.2934).
@@ -258,6 +269,20 @@ mod tests {
     }
 
     crate::float::sweep::sweep_tests!(kernel_sweep);
+
+    /// Pairs of subnormals, where the branch tests' products underflow
+    /// unless the arguments are scaled first: every pair of the 300
+    /// smallest positive f32.
+    #[test]
+    fn atan2_kernel_is_within_its_bound_on_subnormal_pairs() {
+        for i in 1..=300 {
+            for j in 1..=300 {
+                let (y, x) = (f32::from_bits(j), f32::from_bits(i));
+                let err = ulps(atan2_kernel(y, x), (y as f64).atan2(x as f64));
+                assert!(err <= f64::from(ATAN2_MAX_ULP), "{y:e}, {x:e}: {err}");
+            }
+        }
+    }
 
     /// `atan2_kernel` on random pairs with exponents from subnormal to huge,
     /// every sign, against f64.
