@@ -20,7 +20,9 @@
 //!   bound's whole domain, Coq checks Gappa's certificate, and a test checks
 //!   that the model computes the code's bits (`cargo xtask prove` runs all
 //!   three; `docs/verification-proofs.md` describes the models);
-//! - **swept**: an exhaustive test tries every f32 of the bound's domain;
+//! - **swept**: an exhaustive test tries every f32 of the bound's domain
+//!   (for atan2's two arguments, every f32 quotient its branches compute,
+//!   which stands for every pair);
 //! - **measured**: the largest error over random draws, rounded up. Where a
 //!   model proves a looser bound for the same quantity, the doc gives it.
 //!
