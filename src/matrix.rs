@@ -18,6 +18,9 @@ mod quat_conversions;
 mod rig_tform_conversions;
 mod transform;
 
+#[cfg(test)]
+mod tests;
+
 pub use matrix3::Matrix3;
 pub use matrix4::Matrix4;
 pub use rig_tform_conversions::NotRigid;

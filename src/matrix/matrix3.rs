@@ -32,11 +32,6 @@ pub struct Matrix3 {
 impl Matrix3 {
     /// The identity matrix.
     pub const IDENTITY: Self = Self::from_cols(Cvec3::X, Cvec3::Y, Cvec3::Z);
-    /// Every entry zero.
-    pub const ZERO: Self = Self::from_cols(Cvec3::ZERO, Cvec3::ZERO, Cvec3::ZERO);
-    /// Every entry NaN: what [`col`](Self::col) and [`row`](Self::row)
-    /// answer for an index out of range, in each of their components.
-    pub const NAN: Self = Self::from_cols(Cvec3::NAN, Cvec3::NAN, Cvec3::NAN);
 
     /// Builds a matrix from its three columns.
     ///
@@ -210,7 +205,7 @@ impl Matrix3 {
     }
 }
 
-columns!(Matrix3, Cvec3, 9, { a: x, b: y, c: z });
+columns!(Matrix3, Cvec3, 3, 9, glam(mul_mat3, mul_vec3, add_mat3, sub_mat3), { a: x, b: y, c: z });
 
 #[cfg(test)]
 mod tests;

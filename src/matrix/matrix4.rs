@@ -493,6 +493,40 @@ impl Matrix3 {
     pub fn from_mat4(m: Matrix4) -> Self {
         Self::from(m)
     }
+
+    /// The minor of `m` without its column `i` and its row `j` (glam's
+    /// `from_mat4_minor`): the 3x3 sub-matrix whose determinant is the
+    /// `(j, i)` minor of `m`. [`Matrix3::NAN`] where `i` or `j` is past the
+    /// last column or row (glam panics there; this never does).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix3, Matrix4};
+    /// let m = Matrix4::from_translation(Cvec3::new(1.0, 2.0, 3.0));
+    /// assert_eq!(Matrix3::from_mat4_minor(m, 3, 3), Matrix3::IDENTITY);
+    /// assert_eq!(Matrix3::from_mat4_minor(m, 0, 0).col(2), Cvec3::new(2.0, 3.0, 1.0));
+    /// assert!(Matrix3::from_mat4_minor(m, 4, 0).is_nan());
+    /// ```
+    #[must_use]
+    pub fn from_mat4_minor(m: Matrix4, i: usize, j: usize) -> Self {
+        /// The three indices of `0..4` other than `skip`.
+        const fn others(skip: usize) -> [usize; 3] {
+            match skip {
+                0 => [1, 2, 3],
+                1 => [0, 2, 3],
+                2 => [0, 1, 3],
+                _ => [0, 1, 2],
+            }
+        }
+        if i > 3 || j > 3 {
+            return Self::NAN;
+        }
+        let [r0, r1, r2] = others(j);
+        let [a, b, c] = others(i).map(|k| {
+            let col = m.col(k);
+            Cvec3::new(col[r0], col[r1], col[r2])
+        });
+        Self::from_cols(a, b, c)
+    }
 }
 
 impl From<Matrix4> for Matrix3 {
@@ -531,7 +565,7 @@ impl From<Matrix3> for Matrix4 {
     }
 }
 
-columns!(Matrix4, Cvec4, 16, { a: x, b: y, c: z, d: w });
+columns!(Matrix4, Cvec4, 4, 16, glam(mul_mat4, mul_vec4, add_mat4, sub_mat4), { a: x, b: y, c: z, d: w });
 
 #[cfg(test)]
 mod tests {

@@ -23,6 +23,23 @@ impl Matrix4 {
         Self::from(m)
     }
 
+    /// The affine map of the linear part `m` and the translation
+    /// `translation`: `Matrix4::from_translation(translation) *
+    /// Matrix4::from_mat3(m)`, built directly (glam's
+    /// `Mat4::from_mat3_translation`).
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Matrix3, Matrix4};
+    /// let m = Matrix4::from_mat3_translation(Matrix3::IDENTITY * 2.0, Cvec3::X);
+    /// assert_eq!(m.transform_point3(Cvec3::Y), Cvec3::new(1.0, 2.0, 0.0));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn from_mat3_translation(m: Matrix3, translation: Cvec3) -> Self {
+        let [a, b, c, _] = Self::from(m).cols;
+        Self::from_cols(a, b, c, Cvec4::from_point(translation))
+    }
+
     /// The affine map `T R`: rotate by `rotation`, then translate by
     /// `translation` (glam's `Mat4::from_rotation_translation`). Same as
     /// `Matrix4::from(RigTForm::new(translation, rotation))`.
