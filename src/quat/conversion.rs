@@ -48,6 +48,20 @@ impl Quat {
         Self { x, y, z, w }
     }
 
+    /// The quaternion of the 4-vector `[x, y, z, w]`, as it is (glam's
+    /// `Quat::from_vec4`; the same as `Quat::from(v)`). No normalization:
+    /// [`normalize`](Self::normalize) it if it is to be a rotation.
+    ///
+    /// ```
+    /// use rigtform::{Cvec4, Quat};
+    /// assert_eq!(Quat::from_vec4(Cvec4::W), Quat::IDENTITY);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub const fn from_vec4(v: Cvec4) -> Self {
+        Self::from_xyzw(v.x, v.y, v.z, v.w)
+    }
+
     /// The components scalar first, `[w, x, y, z]`, as the notes write
     /// them.
     ///
@@ -120,7 +134,7 @@ impl From<Cvec4> for Quat {
     /// ```
     #[inline]
     fn from(v: Cvec4) -> Self {
-        Self::from_xyzw(v.x, v.y, v.z, v.w)
+        Self::from_vec4(v)
     }
 }
 
@@ -174,5 +188,29 @@ mod tests {
         let (axis, angle) = Quat::from_wxyz(0.0, 0.0, 0.0, -1.0).to_axis_angle();
         assert_eq!(axis, -Cvec3::Z);
         assert_eq!(angle, PI);
+    }
+
+    /// glam's `from_vec4` and `Vec4::from(Quat)`: the components as they
+    /// are, bit for bit.
+    #[test]
+    fn from_vec4_is_glams() {
+        for v in [
+            Cvec4::new(1.0, -2.0, 3.5, -0.0),
+            Cvec4::NAN,
+            Cvec4::W * f32::INFINITY,
+        ] {
+            let theirs = glam::Quat::from_vec4(glam::Vec4::from_array(v.to_array()));
+            let ours = Quat::from_vec4(v);
+            assert_eq!(
+                ours.to_array().map(f32::to_bits),
+                theirs.to_array().map(f32::to_bits)
+            );
+            assert_eq!(
+                Quat::from(v).to_array().map(f32::to_bits),
+                ours.to_array().map(f32::to_bits)
+            );
+            let back = glam::Vec4::from(theirs).to_array().map(f32::to_bits);
+            assert_eq!(Cvec4::from(ours).to_array().map(f32::to_bits), back);
+        }
     }
 }

@@ -213,6 +213,63 @@ impl Quat {
         self.inv() * p
     }
 
+    /// The rotation whose matrix has the columns `x_axis`, `y_axis` and
+    /// `z_axis` (glam's `from_rotation_axes`): as
+    /// [`from_mat3`](Self::from_mat3) of those columns, with its
+    /// preconditions (an orthonormal, right-handed basis) and accuracy.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::from_rotation_axes(Cvec3::Y, -Cvec3::X, Cvec3::Z);
+    /// assert!(q.angle_to(Quat::from_rotation_z(core::f32::consts::FRAC_PI_2)) < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn from_rotation_axes(x_axis: Cvec3, y_axis: Cvec3, z_axis: Cvec3) -> Self {
+        Self::from_basis(x_axis, y_axis, z_axis)
+    }
+
+    /// The rotation's unit axis, nalgebra's `UnitQuaternion::axis`: the
+    /// direction of the vector part of the quaternion written with
+    /// `w >= 0` ([`cn`](Self::cn)), so that the angle about it is
+    /// [`angle`](Self::angle), in [0, pi]. `None` where there is no axis:
+    /// no rotation (a zero vector part), and NaN or infinite components.
+    ///
+    /// # Accuracy
+    ///
+    /// As [`try_normalize`](Self::try_normalize) of the vector part.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat};
+    /// let q = Quat::from_axis_angle(Cvec3::new(0.0, 0.0, -2.0), 0.5);
+    /// assert_eq!(q.axis(), Some(-Cvec3::Z));
+    /// assert_eq!((-q).axis(), Some(-Cvec3::Z));
+    /// assert_eq!(Quat::IDENTITY.axis(), None);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn axis(self) -> Option<Cvec3> {
+        self.cn().vector().try_normalize()
+    }
+
+    /// nalgebra's `renormalize`: here `q = q.normalize()` (the notes'
+    /// word). Like nalgebra's, it normalizes in place and returns the norm
+    /// it had.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::Quat;
+    /// let mut q = Quat::from_xyzw(0.0, 0.0, 0.0, 2.0);
+    /// assert_eq!(q.renormalize(), 2.0);
+    /// assert_eq!(q, Quat::IDENTITY);
+    /// ```
+    #[deprecated(since = "0.1.0", note = "use `q = q.normalize()`")]
+    #[inline]
+    pub fn renormalize(&mut self) -> f32 {
+        let norm = self.norm();
+        *self = self.normalize();
+        norm
+    }
+
     renamed! {
         /// nalgebra's `scaled_axis`: here [`to_scaled_axis`](Self::to_scaled_axis).
         ///
@@ -337,138 +394,87 @@ impl Quat {
             let (yaw, pitch, roll) = self.to_euler(EulerRot::ZYX);
             (roll, pitch, yaw)
         }
+
+        /// nalgebra's `UnitQuaternion::new_normalize(q)`: here
+        /// [`q.normalize()`](Self::normalize). A `Quat` has no unit
+        /// wrapper; the methods that need a unit quaternion say so.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::Quat;
+        /// let q = Quat::from_wxyz(2.0, 0.0, 0.0, 0.0);
+        /// assert_eq!(Quat::new_normalize(q), q.normalize());
+        /// ```
+        note "use `q.normalize()`: a `Quat` has no unit wrapper";
+        pub fn new_normalize(q: Self) -> Self {
+            q.normalize()
+        }
+
+        /// nalgebra's `UnitQuaternion::new_unchecked(q)`: here `q` itself.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::Quat;
+        /// assert_eq!(Quat::new_unchecked(Quat::IDENTITY), Quat::IDENTITY);
+        /// ```
+        note "a `Quat` has no unit wrapper: use `q` itself";
+        pub const fn new_unchecked(q: Self) -> Self {
+            q
+        }
+
+        /// nalgebra's `UnitQuaternion::quaternion()`: here the `Quat`
+        /// itself.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::Quat;
+        /// assert_eq!(Quat::IDENTITY.quaternion().w, 1.0);
+        /// ```
+        note "a `Quat` has no unit wrapper: use `q` itself";
+        pub const fn quaternion(&self) -> &Self {
+            self
+        }
+
+        /// nalgebra's `UnitQuaternion::into_inner()`: here the `Quat`
+        /// itself.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::Quat;
+        /// assert_eq!(Quat::IDENTITY.into_inner(), Quat::IDENTITY);
+        /// ```
+        note "a `Quat` has no unit wrapper: use `q` itself";
+        pub const fn into_inner(self) -> Self {
+            self
+        }
+
+        /// nalgebra's `imag()`, the vector part: here
+        /// [`vector`](Self::vector) (or glam's [`xyz`](Self::xyz)).
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::Quat;
+        /// let q = Quat::from_xyzw(1.0, 2.0, 3.0, 4.0);
+        /// assert_eq!(q.imag(), q.vector());
+        /// ```
+        note "use `q.vector()`, the vector part";
+        pub const fn imag(&self) -> Cvec3 {
+            self.vector()
+        }
+
+        /// nalgebra's `scalar()`, the scalar part: here the field `w`.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::Quat;
+        /// assert_eq!(Quat::IDENTITY.scalar(), Quat::IDENTITY.w);
+        /// ```
+        note "use the field `q.w`, the scalar part";
+        pub const fn scalar(&self) -> f32 {
+            self.w
+        }
     }
 }
 
 #[cfg(test)]
-#[allow(deprecated)]
-mod tests {
-    use super::*;
-    use nalgebra as na;
-    use rand::{Rng, SeedableRng};
-
-    fn na_quat(q: Quat) -> na::UnitQuaternion<f32> {
-        na::UnitQuaternion::new_unchecked(na::Quaternion::new(q.w, q.x, q.y, q.z))
-    }
-
-    fn from_na(q: na::UnitQuaternion<f32>) -> Quat {
-        Quat::from_wxyz(q.w, q.i, q.j, q.k)
-    }
-
-    fn glam_quat(q: Quat) -> glam::Quat {
-        glam::Quat::from_array(q.to_array())
-    }
-
-    /// Each of glam's and nalgebra's names gives what it gives there.
-    #[test]
-    fn other_names_mean_what_they_mean_in_glam_and_nalgebra() {
-        let mut rng = rand::rngs::StdRng::seed_from_u64(29);
-        for _ in 0..10_000 {
-            let mut draw = || {
-                Quat::from_axis_angle(
-                    Cvec3::new(
-                        rng.random_range(-1.0..1.0),
-                        rng.random_range(-1.0..1.0),
-                        rng.random_range(-1.0..1.0),
-                    ),
-                    rng.random_range(-3.0..3.0),
-                )
-            };
-            let (a, b) = (draw(), draw());
-            let (ga, gb) = (glam_quat(a), glam_quat(b));
-            let (na_a, na_b) = (na_quat(a), na_quat(b));
-            assert_eq!(a.conjugate().to_array(), ga.conjugate().to_array());
-            assert_eq!(a.inverse().to_array(), ga.inverse().to_array());
-            assert!((a.length() - ga.length()).abs() < 1e-6);
-            assert!((a.length_squared() - ga.length_squared()).abs() < 1e-6);
-            assert!((a.angle_between(b) - ga.angle_between(gb)).abs() < 2e-3);
-            assert!((a.angle() - na_a.angle()).abs() < 1e-5);
-            assert!(a.rotation_to(b).angle_to(from_na(na_a.rotation_to(&na_b))) < 1e-5);
-            assert_eq!(a.xyz().to_array(), ga.xyz().to_array());
-            let v = Cvec3::new(1.0, -2.0, 0.5);
-            let gv = ga.mul_vec3(glam::Vec3::from_array(v.to_array()));
-            assert!((a.mul_vec3(v) - Cvec3::from_array(gv.to_array())).norm() < 1e-5);
-            assert!(
-                a.mul_quat(b)
-                    .angle_to(Quat::from_array(ga.mul_quat(gb).to_array()))
-                    < 1e-6
-            );
-            let t = rng.random_range(0.0..1.0);
-            assert!(
-                a.lerp(b, t)
-                    .angle_to(Quat::from_array(ga.lerp(gb, t).to_array()))
-                    < 1e-5
-            );
-            assert!(a.powf(t).angle_to(from_na(na_a.powf(t))) < 1e-5);
-            let (roll, pitch, yaw) = (
-                rng.random_range(-3.0..3.0),
-                rng.random_range(-1.5..1.5),
-                rng.random_range(-3.0..3.0),
-            );
-            let ours = Quat::from_euler_angles(roll, pitch, yaw);
-            let theirs = na::UnitQuaternion::from_euler_angles(roll, pitch, yaw);
-            assert!(ours.angle_to(from_na(theirs)) < 1e-5);
-            let (r, p, y) = ours.euler_angles();
-            let (nr, np, ny) = theirs.euler_angles();
-            assert!((r - nr).abs() < 1e-3 && (p - np).abs() < 1e-3 && (y - ny).abs() < 1e-3);
-            let w = Cvec3::new(-0.5, 2.0, 0.25);
-            let nw = na::Vector3::new(w.x, w.y, w.z);
-            let close =
-                |u: Cvec3, v: na::Vector3<f32>| (u - Cvec3::new(v.x, v.y, v.z)).norm() < 1e-5;
-            assert!(close(a.transform_vector(w), na_a.transform_vector(&nw)));
-            assert!(close(
-                a.inverse_transform_vector(w),
-                na_a.inverse_transform_vector(&nw)
-            ));
-            let np = na::Point3::new(w.x, w.y, w.z);
-            assert!(close(
-                a.transform_point(w),
-                na_a.transform_point(&np).coords
-            ));
-            assert!(close(
-                a.inverse_transform_point(w),
-                na_a.inverse_transform_point(&np).coords
-            ));
-            let up = Cvec3::new(0.1, 1.0, -0.2);
-            if v.normalize().cross(up.normalize()).norm() > 0.1 {
-                let (nv, nu) = (
-                    na::Vector3::new(v.x, v.y, v.z),
-                    na::Vector3::new(up.x, up.y, up.z),
-                );
-                let theirs = from_na(na::UnitQuaternion::face_towards(&nv, &nu));
-                assert!(Quat::face_towards(v, up).angle_to(theirs) < 1e-5);
-                let theirs = from_na(na::UnitQuaternion::look_at_rh(&nv, &nu));
-                assert!(Quat::look_at_rh(v, up).angle_to(theirs) < 1e-5);
-            }
-            assert_eq!(a.scaled_axis(), a.to_scaled_axis());
-            assert!(close(a.scaled_axis(), na_a.scaled_axis()));
-        }
-        assert_eq!(Quat::identity().to_array(), glam::Quat::IDENTITY.to_array());
-        let mut rng = rand::rngs::StdRng::seed_from_u64(34);
-        for _ in 0..10_000 {
-            let mut v = || {
-                Cvec3::new(
-                    rng.random_range(-1.0..1.0),
-                    rng.random_range(-1.0..1.0),
-                    rng.random_range(-1.0..1.0),
-                )
-                .normalize()
-            };
-            let (from, to) = (v(), v());
-            let ours = Quat::from_rotation_arc_colinear(from, to);
-            let theirs = glam::Quat::from_rotation_arc_colinear(
-                glam::Vec3::from_array(from.to_array()),
-                glam::Vec3::from_array(to.to_array()),
-            );
-            assert!(ours.angle_to(Quat::from_array(theirs.to_array())) < 1e-4);
-            assert!(ours.angle() <= core::f32::consts::FRAC_PI_2 + 1e-6);
-            let angle = rng.random_range(0.0..0.01f32);
-            let q = Quat::from_axis_angle(from, angle);
-            let g = glam::Quat::from_array(q.to_array());
-            if (angle - 0.002_847_144_6).abs() > 1e-4 {
-                assert_eq!(q.is_near_identity(), g.is_near_identity(), "{angle}");
-            }
-            assert!((q.length_recip() - g.length_recip()).abs() < 1e-6);
-        }
-    }
-}
+mod tests;
