@@ -211,6 +211,7 @@
 pub mod accuracy;
 pub mod animation;
 pub mod attitude;
+mod constructors;
 mod display;
 mod features;
 mod float;
@@ -249,6 +250,9 @@ pub mod kani_kernels {
 #[doc(hidden)]
 pub mod kani_contracts;
 
+// glam's free constructors, deprecated: a user's import of one warns.
+#[allow(deprecated)]
+pub use constructors::{mat3, mat4, quat, vec3, vec4};
 pub use matrix::{Matrix3, Matrix4, NotRigid};
 pub use quat::{EulerRot, Quat};
 pub use rigtform::RigTForm;
