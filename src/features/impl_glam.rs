@@ -3,8 +3,8 @@
 //! for [`Quat`] (`glam::Quat`), [`Cvec3`] (`glam::Vec3` and `glam::Vec3A`),
 //! [`Cvec4`] (`glam::Vec4`), [`Matrix3`] (`glam::Mat3`) and [`Matrix4`]
 //! (`glam::Mat4`), each exact, component by component; and [`RigTForm`] to
-//! `glam::Affine3A`, and back with `TryFrom`, which checks that the affine
-//! map is rigid.
+//! `glam::Affine3A`, and back from it or a `glam::Mat4` with `TryFrom`,
+//! which checks that the map is rigid.
 //!
 //! | feature | glam | used by | Rust |
 //! | --- | --- | --- | --- |
@@ -173,6 +173,19 @@ macro_rules! glam_conversions {
             }
         }
 
+        impl TryFrom<glam::Mat4> for RigTForm {
+            type Error = NotRigid;
+
+            /// The rigid body transform of a matrix that holds one (a Bevy
+            /// `GlobalTransform`'s matrix without scale, a view's inverse),
+            /// as [`RigTForm::try_from`] a [`Matrix4`]: [`NotRigid`] for a
+            /// scale, a shear, a mirror or a projection (glam's
+            /// `Affine3A::from_mat4` keeps those; a `RigTForm` cannot).
+            fn try_from(m: glam::Mat4) -> Result<Self, NotRigid> {
+                RigTForm::try_from(Matrix4::from(m))
+            }
+        }
+
         #[cfg(test)]
         mod tests {
             use super::*;
@@ -318,6 +331,9 @@ macro_rules! glam_conversions {
                     let back = RigTForm::try_from(affine).unwrap();
                     assert_eq!(bits(back.t.to_array()), bits(t.to_array()));
                     assert!(back.r.angle_to(a.r) < 1e-6);
+                    let m = glam::Mat4::from_rotation_translation(a.r.into(), a.t.into());
+                    assert_eq!(RigTForm::try_from(m), RigTForm::try_from(Matrix4::from(m)));
+                    assert!(RigTForm::try_from(m).unwrap().r.angle_to(a.r) < 1e-6);
                 }
             }
 
@@ -339,7 +355,12 @@ macro_rules! glam_conversions {
                         "{affine:?}"
                     );
                     assert!(std::format!("{e}").starts_with("not a rigid body transform"));
+                    let from_mat4 = RigTForm::try_from(glam::Mat4::from(affine)).unwrap_err();
+                    assert_eq!(from_mat4.deviation.to_bits(), e.deviation.to_bits());
                 }
+                let mut projective = glam::Mat4::IDENTITY;
+                projective.z_axis.w = -1.0;
+                assert!(RigTForm::try_from(projective).is_err());
             }
         }
     };

@@ -4,7 +4,9 @@
 //! [`Cvec3`] (`Vector3<f32>` and `Point3<f32>`), [`Cvec4`]
 //! (`Vector4<f32>`), [`Matrix3`] (`Matrix3<f32>`), [`Matrix4`]
 //! (`Matrix4<f32>`) and [`RigTForm`]
-//! (`Isometry3<f32>`), each exact, component by component.
+//! (`Isometry3<f32>`), each exact, component by component; and a
+//! `RigTForm` from a `Matrix4<f32>` with `TryFrom`, which checks that the
+//! matrix is rigid.
 //!
 //! nalgebra 0.35 needs Rust 1.89; the rest of the crate builds with 1.84.
 //!
@@ -170,6 +172,18 @@ impl From<RigTForm> for na::Isometry3<f32> {
     }
 }
 
+impl TryFrom<na::Matrix4<f32>> for RigTForm {
+    type Error = crate::NotRigid;
+
+    /// The rigid body transform of a homogeneous matrix that holds one, as
+    /// [`RigTForm::try_from`] a [`Matrix4`] (nalgebra's
+    /// `na::try_convert::<_, Isometry3<f32>>(m)`): [`NotRigid`](crate::NotRigid)
+    /// for a scale, a shear, a mirror or a projection.
+    fn try_from(m: na::Matrix4<f32>) -> Result<Self, crate::NotRigid> {
+        RigTForm::try_from(Matrix4::from(m))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -252,6 +266,16 @@ mod tests {
             assert!((m - theirs_m).abs().max() < 1e-6);
             let inv = RigTForm::from(iso.inverse());
             assert!((inv.t - a.inv().t).norm() < 1e-5 && inv.r.angle_to(a.inv().r) < 1e-6);
+            // A matrix that holds a rigid transform comes back where
+            // nalgebra's try_convert finds its isometry, and one that
+            // scales does not, in either crate.
+            let back = RigTForm::try_from(theirs_m).expect("rigid");
+            let iso_back: na::Isometry3<f32> = na::try_convert(theirs_m).expect("rigid");
+            assert!((back.t - Cvec3::from(iso_back.translation.vector)).norm() < 1e-6);
+            assert!(back.r.angle_to(iso_back.rotation.into()) < 1e-6);
+            let scaled = theirs_m * na::Matrix4::new_scaling(1.5);
+            assert!(RigTForm::try_from(scaled).is_err());
+            assert!(na::try_convert::<_, na::Isometry3<f32>>(scaled).is_none());
         }
     }
 }

@@ -9,6 +9,47 @@ use crate::quat::Quat;
 use crate::rigtform::RigTForm;
 
 impl RigTForm {
+    /// glam's `Affine3A::from_mat4(m)`, which keeps whatever the matrix
+    /// holds: a `RigTForm` holds only a rotation and a translation, so here
+    /// it is [`RigTForm::try_from(m)`](#impl-TryFrom%3CMatrix4%3E-for-RigTForm),
+    /// which says when the matrix is not rigid ([`NotRigid`]).
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Cvec3, Matrix4, RigTForm};
+    /// let m = Matrix4::from_translation(Cvec3::X);
+    /// assert_eq!(RigTForm::from_mat4(m), RigTForm::try_from(m));
+    /// assert!(RigTForm::from_mat4(Matrix4::from_scale(Cvec3::splat(2.0))).is_err());
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "a general matrix is not rigid: use `RigTForm::try_from(m)`, a `Result` whose \
+                error `NotRigid` says how far from rigid it is (take a scale off first with \
+                `Matrix4::to_scale_rotation_translation`)"
+    )]
+    #[inline]
+    pub fn from_mat4(m: Matrix4) -> Result<Self, NotRigid> {
+        Self::try_from(m)
+    }
+
+    /// nalgebra's `Isometry3::to_matrix`: here `Matrix4::from(a)`.
+    ///
+    /// ```
+    /// # #![allow(deprecated)]
+    /// use rigtform::{Matrix4, RigTForm};
+    /// let a = RigTForm::from_rotation_x(0.3);
+    /// assert_eq!(a.to_matrix(), Matrix4::from(a));
+    /// ```
+    #[deprecated(
+        since = "0.1.0",
+        note = "use `Matrix4::from(a)` (or `Matrix4::from_rig_tform`)"
+    )]
+    #[inline]
+    #[must_use]
+    pub fn to_matrix(self) -> Matrix4 {
+        Matrix4::from_rig_tform(self)
+    }
+
     /// nalgebra's `Isometry3::to_homogeneous`: here `Matrix4::from(a)`.
     ///
     /// ```
@@ -44,7 +85,8 @@ impl fmt::Display for NotRigid {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "not a rigid body transform: the matrix is {} from rotation and translation (at most {} allowed)",
+            "not a rigid body transform: the matrix is {} from rotation and translation (at most {} allowed); \
+             Matrix4::to_scale_rotation_translation takes a scale apart from the rotation",
             self.deviation,
             crate::accuracy::RIGID_TOLERANCE
         )
@@ -174,5 +216,42 @@ mod tests {
         // Within the tolerance: accepted, and the rotation made unit.
         let nearly = Matrix4::from_scale(Cvec3::new(1.0, 1.0, 1.0 + 1e-5));
         assert!(RigTForm::try_from(nearly).unwrap().r.is_normalized());
+    }
+
+    /// glam's `Affine3A::from_mat4` and nalgebra's `Isometry3::to_matrix`,
+    /// which lead to the crate's conversions, map points as glam's and
+    /// nalgebra's do, and refuse what a `RigTForm` cannot hold.
+    #[test]
+    #[allow(deprecated)]
+    fn glams_from_mat4_and_nalgebras_to_matrix_map_points_as_theirs() {
+        use rand::Rng;
+        let mut rng = rand::rngs::StdRng::seed_from_u64(44);
+        for _ in 0..10_000 {
+            let a = rig_tform(&mut rng);
+            let m = a.to_matrix();
+            assert_eq!(m, Matrix4::from(a));
+            let iso = nalgebra::Isometry3::from_parts(
+                nalgebra::Translation3::new(a.t.x, a.t.y, a.t.z),
+                nalgebra::UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(
+                    a.r.w, a.r.x, a.r.y, a.r.z,
+                )),
+            );
+            let theirs = iso.to_matrix();
+            assert!(m
+                .to_cols_array()
+                .iter()
+                .zip(theirs.as_slice())
+                .all(|(x, y)| (x - y).abs() < 1e-5));
+            let g = glam::Mat4::from_cols_array(&m.to_cols_array());
+            let affine = glam::Affine3A::from_mat4(g);
+            let ours = RigTForm::from_mat4(m).expect("rigid");
+            let p = Cvec3::new(rng.random(), rng.random(), rng.random()) * 10.0;
+            let gp = affine.transform_point3(glam::Vec3::from_array(p.to_array()));
+            assert!((ours.transform_point(p) - Cvec3::from_array(gp.to_array())).norm() < 1e-4);
+            let scaled = m * Matrix4::from_scale(Cvec3::splat(rng.random_range(1.1..3.0)));
+            let e = RigTForm::from_mat4(scaled).unwrap_err();
+            assert!(e.deviation > crate::accuracy::RIGID_TOLERANCE);
+            assert!(std::format!("{e}").contains("to_scale_rotation_translation"));
+        }
     }
 }

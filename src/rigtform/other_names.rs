@@ -168,6 +168,21 @@ impl RigTForm {
         Self::look_at(eye, target, up).inv()
     }
 
+    /// The rotation by `angle` radians about `axis`, without translation
+    /// (glam's `Affine3A::from_axis_angle`): the rotation of
+    /// [`Quat::from_axis_angle`], with its preconditions (any non-zero
+    /// axis) and accuracy.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Quat, RigTForm};
+    /// let a = RigTForm::from_axis_angle(Cvec3::Y, 0.5);
+    /// assert_eq!(a, RigTForm::from_rotation(Quat::from_axis_angle(Cvec3::Y, 0.5)));
+    /// ```
+    #[must_use]
+    pub fn from_axis_angle(axis: Cvec3, angle: f32) -> Self {
+        Self::from_rotation(Quat::from_axis_angle(axis, angle))
+    }
+
     renamed! {
         /// nalgebra's `Isometry3::from_parts(translation, rotation)`: here
         /// [`RigTForm::new(t, r)`](Self::new).
@@ -180,6 +195,20 @@ impl RigTForm {
         note "use `RigTForm::new(t, r)`";
         pub const fn from_parts(t: Cvec3, r: Quat) -> Self {
             Self::new(t, r)
+        }
+
+        /// glam's `Affine3A::from_quat(rotation)`: here
+        /// [`RigTForm::from_rotation`].
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Quat, RigTForm};
+        /// let q = Quat::from_rotation_z(0.4);
+        /// assert_eq!(RigTForm::from_quat(q), RigTForm::from_rotation(q));
+        /// ```
+        note "use `RigTForm::from_rotation(r)`";
+        pub const fn from_quat(r: Quat) -> Self {
+            Self::from_rotation(r)
         }
 
         /// glam's and nalgebra's `inverse`: the notes call it `inv`.
@@ -351,6 +380,29 @@ mod tests {
             assert_eq!(RigTForm::from_rotation_translation(a.r, a.t), a);
         }
         assert_eq!(RigTForm::identity(), RigTForm::IDENTITY);
+    }
+
+    /// glam's `Affine3A::from_axis_angle` and `from_quat` map points as
+    /// glam's do.
+    #[test]
+    fn glams_affine_constructors_agree_with_glam() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(45);
+        for _ in 0..10_000 {
+            let mut c = || rng.random_range(-1.0f32..1.0);
+            let axis = Cvec3::new(c(), c(), c()).normalize();
+            let (angle, p) = (3.0 * c(), Cvec3::new(c(), c(), c()) * 10.0);
+            let g = |v: Cvec3| glam::Vec3::from_array(v.to_array());
+            let theirs = glam::Affine3A::from_axis_angle(g(axis), angle).transform_point3(g(p));
+            let ours = RigTForm::from_axis_angle(axis, angle);
+            assert!((ours * p - Cvec3::from_array(theirs.to_array())).norm() < 1e-5);
+            let q = ours.r;
+            let theirs = glam::Affine3A::from_quat(glam::Quat::from_array(q.to_array()));
+            let theirs = theirs.transform_point3(g(p));
+            assert_eq!(RigTForm::from_quat(q), RigTForm::from_rotation(q));
+            assert!(
+                (RigTForm::from_quat(q) * p - Cvec3::from_array(theirs.to_array())).norm() < 1e-5
+            );
+        }
     }
 
     /// `face_towards` and `look_at_rh` mean what they mean in nalgebra:
