@@ -18,7 +18,10 @@
 //!   `Quat::from_matrix` in `matrix/quat_conversions.rs` takes from a
 //!   matrix), `quat/rotation_arc.rs` (the shortest rotation between two
 //!   directions), `quat/catmull_rom.rs` (splines through many keyframes);
-//! - `quat/other_names.rs`: glam's and nalgebra's names for these methods.
+//! - `quat/other_names.rs`: glam's and nalgebra's names for these methods;
+//! - `quat/vec_rotations.rs`: glam's `Vec3` helpers that turn a vector
+//!   (`rotate_x`, `rotate_axis`, `rotate_towards`, `slerp`), methods of
+//!   `Cvec3` that take their turns from quaternions.
 //!
 //! As a 4-vector (sums, scaling, norms), a `Quat` shares the code of the
 //! vector types (`vec/template.rs`).
@@ -287,6 +290,8 @@ mod exp_log;
 pub(crate) mod catmull_rom;
 
 mod other_names;
+
+mod vec_rotations;
 
 /// The backend of the evaluations that keep a quaternion's components
 /// together (the Hamilton product, `nlerp`): SSE registers on x86-64,

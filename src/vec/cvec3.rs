@@ -6,6 +6,7 @@
 use super::template::{coordinates, euclidean};
 use super::Cvec4;
 use crate::float;
+use crate::other_names::renamed;
 
 /// A coordinate 3-vector `[x, y, z]`, the `cvec3` of the notes.
 ///
@@ -182,6 +183,107 @@ impl Cvec3 {
         match (self.try_normalize(), other.try_normalize()) {
             (Some(u), Some(v)) => float::atan2(u.cross(v).norm(), u.dot(v)),
             _ => f32::NAN,
+        }
+    }
+}
+
+impl Cvec3 {
+    /// A vector perpendicular to `self`, of no particular length (glam's
+    /// `any_orthogonal_vector`, the same formula): `self x Y` or
+    /// `self x X`, whichever is the longer, so it is zero only for the
+    /// zero vector.
+    ///
+    /// ```
+    /// use rigtform::Cvec3;
+    /// let v = Cvec3::new(1.0, 2.0, 3.0);
+    /// assert_eq!(v.any_orthogonal_vector().dot(v), 0.0);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn any_orthogonal_vector(self) -> Self {
+        if self.x.abs() > self.y.abs() {
+            Self::new(-self.z, 0.0, self.x)
+        } else {
+            Self::new(0.0, self.z, -self.y)
+        }
+    }
+
+    /// A unit vector perpendicular to the unit vector `self` (glam's
+    /// `any_orthonormal_vector`): the second vector of
+    /// [`any_orthonormal_pair`](Self::any_orthonormal_pair).
+    ///
+    /// # Preconditions
+    ///
+    /// As [`any_orthonormal_pair`](Self::any_orthonormal_pair).
+    ///
+    /// ```
+    /// use rigtform::Cvec3;
+    /// let v = Cvec3::new(1.0, 2.0, 3.0).normalize();
+    /// let u = v.any_orthonormal_vector();
+    /// assert!(u.dot(v).abs() < 1e-6 && (u.norm() - 1.0).abs() < 1e-6);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn any_orthonormal_vector(self) -> Self {
+        self.any_orthonormal_pair().1
+    }
+
+    /// Two unit vectors that make a right-handed orthonormal basis with
+    /// the unit vector `self`, `(a, b)` with `a x b = self` (glam's
+    /// `any_orthonormal_pair`, the same formula: J. R. Frisvad's, as
+    /// revised by T. Duff et al., "Building an Orthonormal Basis,
+    /// Revisited", *Journal of Computer Graphics Techniques* 6(1), 2017).
+    ///
+    /// # Preconditions
+    ///
+    /// `self` is of unit length (glam asserts it); for any other the pair
+    /// is not orthonormal. NaN in, NaN out.
+    ///
+    /// ```
+    /// use rigtform::Cvec3;
+    /// let n = Cvec3::new(-2.0, 0.5, 1.0).normalize();
+    /// let (a, b) = n.any_orthonormal_pair();
+    /// assert!((a.cross(b) - n).norm() < 1e-6);
+    /// ```
+    #[must_use]
+    pub fn any_orthonormal_pair(self) -> (Self, Self) {
+        let sign = self.z.signum();
+        let a = -1.0 / (sign + self.z);
+        let b = self.x * self.y * a;
+        (
+            Self::new(1.0 + sign * self.x * self.x * a, sign * b, -sign * self.x),
+            Self::new(b, sign + self.y * self.y * a, -self.y),
+        )
+    }
+
+    renamed! {
+        /// glam's `Vec3::to_homogeneous`, the point `[x, y, z, 1]`: here
+        /// [`Cvec4::from_point`] (nalgebra's `Vector3::to_homogeneous`
+        /// gives the vector `[x, y, z, 0]`, [`Cvec4::from_vector`]).
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Cvec3, Cvec4};
+        /// assert_eq!(Cvec3::X.to_homogeneous(), Cvec4::from_point(Cvec3::X));
+        /// ```
+        note "use `Cvec4::from_point(p)` (w = 1, glam's meaning) or `Cvec4::from_vector(v)` (w = 0, nalgebra's `Vector3::to_homogeneous`)";
+        pub const fn to_homogeneous(self) -> Cvec4 {
+            Cvec4::from_point(self)
+        }
+
+        /// glam's `Vec3::from_homogeneous(v)`, the point of homogeneous
+        /// coordinates `v`: here [`v.project()`](Cvec4::project), the
+        /// perspective divide.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Cvec3, Cvec4};
+        /// let v = Cvec4::new(2.0, 4.0, 6.0, 2.0);
+        /// assert_eq!(Cvec3::from_homogeneous(v), v.project());
+        /// ```
+        note "use `v.project()`, the perspective divide";
+        pub fn from_homogeneous(v: Cvec4) -> Self {
+            v.project()
         }
     }
 }

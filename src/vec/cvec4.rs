@@ -147,5 +147,19 @@ impl Cvec4 {
     }
 }
 
+impl From<(Cvec3, f32)> for Cvec4 {
+    /// `[v, w]`, glam's `Vec4::from((v, w))`: [`Cvec4::from_point`] for
+    /// `w = 1`, [`Cvec4::from_vector`] for `w = 0`.
+    ///
+    /// ```
+    /// use rigtform::{Cvec3, Cvec4};
+    /// assert_eq!(Cvec4::from((Cvec3::X, 1.0)), Cvec4::from_point(Cvec3::X));
+    /// ```
+    #[inline]
+    fn from((v, w): (Cvec3, f32)) -> Self {
+        v.extend(w)
+    }
+}
+
 euclidean!(Cvec4 { x, y, z, w }, unit X);
 coordinates!(Cvec4, 4, [x, y, z, w], index { 0 => x, 1 => y, 2 => z } last w);

@@ -7,8 +7,10 @@
 //!   norms and normalization without overflow or underflow, the finiteness
 //!   tests, sums, differences and scaling;
 //! - [`coordinates!`]: what the vectors alone have: constants, arrays and
-//!   tuples, indexing, `lerp`, projections, and glam's everyday
-//!   component-wise methods.
+//!   tuples, indexing, `lerp`, and glam's everyday component-wise methods;
+//!   and, through [`lengths!`] (`vec/template/lengths.rs`), what they do
+//!   with lengths and directions: distances, projections, normalization
+//!   with a fallback, clamped lengths, `move_towards`, `refract`.
 //!
 //! Every example of a shared method names its type `V` (and, in
 //! [`euclidean!`], a value of norm 1 of it `u`), so that one example reads
@@ -281,7 +283,7 @@ pub(super) fn max_or_nan(a: f32, b: f32) -> f32 {
 /// What the vector types alone have, besides [`euclidean!`]: the
 /// constants, arrays and tuples in the order of the fields, indexing (the
 /// last field takes every index past the end, so indexing never panics),
-/// `lerp`, projections, and glam's everyday component-wise methods.
+/// `lerp`, glam's everyday component-wise methods, and [`lengths!`].
 macro_rules! coordinates {
     (
         $t:ident, $n:literal, [$first:ident $(, $rest:ident)*],
@@ -349,63 +351,6 @@ macro_rules! coordinates {
                 self * (1.0 - alpha) + other * alpha
             }
 
-            /// The vector projection of `self` onto the line of `rhs`:
-            /// `(self . u) u` with `u` the direction of `rhs` (glam's
-            /// `project_onto`).
-            ///
-            /// # Preconditions
-            ///
-            /// `rhs` is finite and non-zero, and `self` finite; otherwise
-            /// the result is NaN (never a panic). `rhs` need not be of unit
-            /// length: it is normalized first, without overflow or
-            /// underflow.
-            ///
-            /// # Accuracy
-            ///
-            /// Within [`accuracy::PROJECT_MAX_REL_ERROR`](crate::accuracy::PROJECT_MAX_REL_ERROR)
-            /// times `|self|` of the exact projection of the f32 inputs.
-            ///
-            /// ```
-            #[doc = $crate::vec::example_uses!($t)]
-            /// let v = V::splat(3.0);
-            /// assert_eq!(v.project_onto(V::Y * 10.0), V::Y * 3.0);
-            /// assert!(v.project_onto(V::ZERO).is_nan());
-            /// ```
-            #[doc(alias = "project")]
-            #[must_use]
-            pub fn project_onto(self, rhs: Self) -> Self {
-                match rhs.try_normalize() {
-                    Some(u) => u * self.dot(u),
-                    None => Self::NAN,
-                }
-            }
-
-            /// The part of `self` perpendicular to `rhs`: `self` minus its
-            /// [`project_onto`](Self::project_onto) `rhs` (glam's
-            /// `reject_from`).
-            ///
-            /// # Preconditions
-            ///
-            /// As [`project_onto`](Self::project_onto): NaN for a zero or
-            /// non-finite `rhs`.
-            ///
-            /// # Accuracy
-            ///
-            /// Within [`accuracy::PROJECT_MAX_REL_ERROR`](crate::accuracy::PROJECT_MAX_REL_ERROR)
-            /// times `|self|` of the exact rejection (the error of the
-            /// projection, and one rounding of the difference).
-            ///
-            /// ```
-            #[doc = $crate::vec::example_uses!($t)]
-            /// let v = V::splat(3.0);
-            /// assert_eq!(v.reject_from(V::Y), v - V::Y * 3.0);
-            /// ```
-            #[doc(alias = "reject")]
-            #[must_use]
-            pub fn reject_from(self, rhs: Self) -> Self {
-                self - self.project_onto(rhs)
-            }
-
             /// The sum of the components, left to right (glam's
             /// `element_sum`).
             ///
@@ -445,36 +390,6 @@ macro_rules! coordinates {
             #[must_use]
             pub fn midpoint(self, other: Self) -> Self {
                 self * 0.5 + other * 0.5
-            }
-
-            /// `1 / |self|` (glam's `length_recip`): infinite for the zero
-            /// vector, NaN for a NaN component.
-            ///
-            /// ```
-            #[doc = $crate::vec::example_uses!($t)]
-            /// assert_eq!(V::splat(0.5).length_recip(), 2.0 / V::ONE.norm());
-            /// ```
-            #[inline]
-            #[must_use]
-            pub fn length_recip(self) -> f32 {
-                1.0 / self.norm()
-            }
-
-            /// `true` if the norm is within
-            /// [`accuracy::IS_NORMALIZED_TOLERANCE`](crate::accuracy::IS_NORMALIZED_TOLERANCE)
-            /// of 1, as [`Quat::is_normalized`](crate::Quat::is_normalized)
-            /// (glam's `is_normalized`); `false` for NaN or infinite
-            /// components.
-            ///
-            /// ```
-            #[doc = $crate::vec::example_uses!($t)]
-            /// assert!(V::X.is_normalized());
-            /// assert!(!V::ONE.is_normalized());
-            /// ```
-            #[inline]
-            #[must_use]
-            pub fn is_normalized(self) -> bool {
-                (self.norm_squared() - 1.0).abs() <= 2.0 * crate::accuracy::IS_NORMALIZED_TOLERANCE
             }
 
             /// The component-wise minimum. A NaN in either operand gives
@@ -562,104 +477,6 @@ macro_rules! coordinates {
                 m
             }
 
-            /// glam's name for [`norm`](Self::norm): the Euclidean length,
-            /// without intermediate overflow or underflow.
-            ///
-            /// # Accuracy
-            ///
-            /// As [`norm`](Self::norm).
-            ///
-            /// ```
-            #[doc = $crate::vec::example_uses!($t)]
-            /// assert_eq!(V::splat(2.0).length(), V::splat(2.0).norm());
-            /// ```
-            #[inline]
-            #[must_use]
-            pub fn length(self) -> f32 {
-                self.norm()
-            }
-
-            /// glam's name for [`norm_squared`](Self::norm_squared).
-            ///
-            /// ```
-            #[doc = $crate::vec::example_uses!($t)]
-            /// assert_eq!(V::splat(2.0).length_squared(), V::splat(2.0).norm_squared());
-            /// ```
-            #[inline]
-            #[must_use]
-            pub fn length_squared(self) -> f32 {
-                self.norm_squared()
-            }
-
-            /// The Euclidean distance `|self - other|`.
-            ///
-            /// # Accuracy
-            ///
-            /// [`norm`](Self::norm) of `self - other`, whose components are
-            /// each rounded once (half an ulp): within 2 ulp of the length
-            /// of that rounded difference. Infinite where a component of
-            /// the difference overflows.
-            ///
-            /// ```
-            #[doc = $crate::vec::example_uses!($t)]
-            /// let (a, b) = (V::ONE, V::splat(4.0));
-            /// assert_eq!(a.distance(b), (b - a).norm());
-            /// ```
-            #[inline]
-            #[must_use]
-            pub fn distance(self, other: Self) -> f32 {
-                (self - other).norm()
-            }
-
-            /// The squared distance `|self - other|^2` (overflows beyond
-            /// about 1.8e19, as [`norm_squared`](Self::norm_squared)).
-            ///
-            /// ```
-            #[doc = $crate::vec::example_uses!($t)]
-            /// let (a, b) = (V::ONE, V::splat(3.0));
-            /// assert_eq!(a.distance_squared(b), (b - a).norm_squared());
-            /// ```
-            #[inline]
-            #[must_use]
-            pub fn distance_squared(self, other: Self) -> f32 {
-                (self - other).norm_squared()
-            }
-
-            /// The unit vector in the direction of `self`, or the zero
-            /// vector where there is none (zero, NaN or infinite input).
-            ///
-            /// # Accuracy
-            ///
-            /// As [`try_normalize`](Self::try_normalize).
-            ///
-            /// ```
-            #[doc = $crate::vec::example_uses!($t)]
-            /// assert_eq!(V::ZERO.normalize_or_zero(), V::ZERO);
-            /// assert_eq!(V::NAN.normalize_or_zero(), V::ZERO);
-            /// ```
-            #[inline]
-            #[must_use]
-            pub fn normalize_or_zero(self) -> Self {
-                self.normalize_or(Self::ZERO)
-            }
-
-            /// The unit vector in the direction of `self`, or `fallback`
-            /// where there is none (zero, NaN or infinite input).
-            ///
-            /// # Accuracy
-            ///
-            /// As [`try_normalize`](Self::try_normalize).
-            ///
-            /// ```
-            #[doc = $crate::vec::example_uses!($t)]
-            /// assert_eq!(V::ZERO.normalize_or(V::ONE), V::ONE);
-            /// ```
-            #[inline]
-            #[must_use]
-            pub fn normalize_or(self, fallback: Self) -> Self {
-                self.try_normalize().unwrap_or(fallback)
-            }
-
             /// Each component clamped to `[lo, hi]` (of the same
             /// component): `self.max(lo).min(hi)`, so a NaN in any operand
             /// gives NaN in that component, and where `lo > hi` the result
@@ -676,35 +493,6 @@ macro_rules! coordinates {
                 self.max(lo).min(hi)
             }
 
-            /// nalgebra's name for the crate's [`norm`](Self::norm) (glam's
-            /// [`length`](Self::length)).
-            ///
-            /// ```
-            /// # #![allow(deprecated)]
-            #[doc = $crate::vec::example_uses!($t)]
-            /// assert_eq!(V::ONE.magnitude(), V::ONE.norm());
-            /// ```
-            #[deprecated(note = "use `norm` (the notes' name) or `length` (glam's)")]
-            #[inline]
-            #[must_use]
-            pub fn magnitude(self) -> f32 {
-                self.norm()
-            }
-
-            /// nalgebra's name for the crate's
-            /// [`norm_squared`](Self::norm_squared).
-            ///
-            /// ```
-            /// # #![allow(deprecated)]
-            #[doc = $crate::vec::example_uses!($t)]
-            /// assert_eq!(V::ONE.magnitude_squared(), V::ONE.norm_squared());
-            /// ```
-            #[deprecated(note = "use `norm_squared` (the notes' name) or `length_squared` (glam's)")]
-            #[inline]
-            #[must_use]
-            pub fn magnitude_squared(self) -> f32 {
-                self.norm_squared()
-            }
         }
 
         impl core::ops::Mul for $t {
@@ -788,10 +576,14 @@ macro_rules! coordinates {
                 (v.$first $(, v.$rest)*)
             }
         }
+        $crate::vec::template::lengths!($t);
     };
     (@f32 $f:ident) => {
         f32
     };
 }
 
+mod lengths;
+
+pub(crate) use lengths::lengths;
 pub(crate) use {coordinates, euclidean, example_uses};

@@ -435,3 +435,140 @@ fn element_sum_product_midpoint_reflect_and_with_as_glam() {
     assert!(!Cvec3::NAN.is_normalized());
     assert_eq!(Cvec3::ZERO.length_recip(), f32::INFINITY);
 }
+
+/// glam's length and direction helpers, the same on both vector types:
+/// each within a few ulps of glam's of that name (glam's `Vec4` adds its
+/// lanes pairwise, its lengths square without rescaling), and the
+/// clamped lengths within their bound.
+macro_rules! lengths_agree_with_glam {
+    ($name:ident: $t:ident ~ $g:ty) => {
+        #[test]
+        fn $name() {
+            use crate::accuracy::NORMALIZE_MAX_NORM_ERROR;
+            use rand::{Rng, SeedableRng};
+            let g = |v: $t| <$g>::from_array(v.to_array());
+            let close = |v: $t, w: $g, scale: f32| {
+                (v - $t::from_array(w.to_array())).norm() <= 8.0 * f32::EPSILON * scale
+            };
+            let mut rng = rand::rngs::StdRng::seed_from_u64(47);
+            let mut draw =
+                || $t::from_array(core::array::from_fn(|_| rng.random_range(-10.0..10.0)));
+            for _ in 0..10_000 {
+                let (a, b, n) = (draw(), draw(), draw().normalize());
+                let (ga, gb, gn) = (g(a), g(b), g(n));
+                let (lo, hi) = (b.x.abs().min(b.y.abs()), b.x.abs().max(b.y.abs()));
+                let size = a.norm();
+                let clamped = a.clamp_length(lo, hi);
+                assert!(close(clamped, ga.clamp_length(lo, hi), size + hi));
+                let length = clamped.norm();
+                let bound = (NORMALIZE_MAX_NORM_ERROR + f32::EPSILON) * hi;
+                assert!(
+                    length >= lo - bound && length <= hi + bound,
+                    "{a:?} {lo} {hi}"
+                );
+                assert!(close(a.clamp_length_max(lo), ga.clamp_length_max(lo), size));
+                assert!(close(a.clamp_length_min(hi), ga.clamp_length_min(hi), hi));
+                let d = b.z.abs();
+                assert!(close(
+                    a.move_towards(b, d),
+                    ga.move_towards(gb, d),
+                    size + b.norm()
+                ));
+                assert!(close(
+                    a.move_towards(b, -d),
+                    ga.move_towards(gb, -d),
+                    size + b.norm()
+                ));
+                assert!(close(
+                    a.project_onto_normalized(n),
+                    ga.project_onto_normalized(gn),
+                    size
+                ));
+                assert!(close(
+                    a.reject_from_normalized(n),
+                    ga.reject_from_normalized(gn),
+                    size
+                ));
+                let (unit, length) = a.normalize_and_length();
+                let (gunit, glength) = ga.normalize_and_length();
+                assert!(
+                    close(unit, gunit, 1.0)
+                        && (length - glength).abs() <= 4.0 * f32::EPSILON * glength
+                );
+                let ray = a.normalize();
+                let facing = if ray.dot(n) > 0.0 { -n } else { n };
+                let eta = 0.5 + b.z.abs() * 0.15;
+                // Near grazing (k near 0) the root magnifies the dot
+                // product's last bits; the two agree as k allows.
+                let cos = facing.dot(ray);
+                let k = 1.0 - eta * eta * (1.0 - cos * cos);
+                if k.abs() > 1e-3 {
+                    let theirs = g(ray).refract(g(facing), eta);
+                    assert!(close(ray.refract(facing, eta), theirs, 2.0 + 1.0 / k.abs()));
+                }
+            }
+            for v in [$t::ZERO, $t::NAN, $t::X * f32::INFINITY] {
+                assert_eq!(v.normalize_and_length(), ($t::X, 0.0));
+                assert_eq!(g(v).normalize_and_length(), (<$g>::X, 0.0));
+            }
+            // Beyond glam's squares: the direction is still found.
+            let (unit, length) = ($t::X * 1e30).normalize_and_length();
+            assert_eq!((unit, length), ($t::X, 1e30));
+            assert!($t::ZERO.clamp_length_min(1.0).is_nan());
+            assert_eq!($t::ZERO.move_towards($t::X * 5e-5, 1e-9), $t::X * 5e-5);
+            // Total internal reflection, and NaN in, NaN out.
+            assert_eq!(($t::X + $t::Y).normalize().refract($t::Y, 2.0), $t::ZERO);
+            assert!($t::NAN.refract($t::Y, 1.5).is_nan());
+        }
+    };
+}
+
+lengths_agree_with_glam!(cvec3_lengths_agree_with_glam: Cvec3 ~ glam::Vec3);
+lengths_agree_with_glam!(cvec4_lengths_agree_with_glam: Cvec4 ~ glam::Vec4);
+
+/// Cvec3's own glam helpers and `Vec4::from((v, w))`, bit for bit: the
+/// same formulas, the same order of operations.
+#[test]
+#[allow(deprecated)]
+fn cvec3_helpers_and_homogeneous_forms_are_glams_bit_for_bit() {
+    use rand::{Rng, SeedableRng};
+    let bits = |v: Cvec3, w: glam::Vec3| {
+        assert_eq!(
+            v.to_array().map(f32::to_bits),
+            w.to_array().map(f32::to_bits)
+        )
+    };
+    let mut rng = rand::rngs::StdRng::seed_from_u64(48);
+    for _ in 0..10_000 {
+        let mut c = || rng.random_range(-10.0f32..10.0);
+        let (a, n, w) = (
+            Cvec3::new(c(), c(), c()),
+            Cvec3::new(c(), c(), c()).normalize(),
+            c(),
+        );
+        let (ga, gn) = (g3(a), g3(n));
+        bits(a.any_orthogonal_vector(), ga.any_orthogonal_vector());
+        assert_eq!(a.any_orthogonal_vector().dot(a), 0.0);
+        let ((p, q), (gp, gq)) = (n.any_orthonormal_pair(), gn.any_orthonormal_pair());
+        bits(p, gp);
+        bits(q, gq);
+        bits(n.any_orthonormal_vector(), gn.any_orthonormal_vector());
+        assert!((p.cross(q) - n).norm() < 1e-6 && p.dot(n).abs() < 1e-6);
+        bits(a.project_onto_normalized(n), ga.project_onto_normalized(gn));
+        bits(a.reject_from_normalized(n), ga.reject_from_normalized(gn));
+        let ray = a.normalize();
+        let facing = if ray.dot(n) > 0.0 { -n } else { n };
+        bits(ray.refract(facing, 1.33), g3(ray).refract(g3(facing), 1.33));
+        let h = Cvec4::from((a, w));
+        assert_eq!(h.to_array(), glam::Vec4::from((ga, w)).to_array());
+        assert_eq!(
+            a.to_homogeneous().to_array(),
+            ga.to_homogeneous().to_array()
+        );
+        let back = Cvec3::from_homogeneous(h);
+        bits(
+            back,
+            glam::Vec3::from_homogeneous(glam::Vec4::from((ga, w))),
+        );
+    }
+}
