@@ -15,4 +15,4 @@ mod tests;
 
 pub use cvec3::Cvec3;
 pub use cvec4::Cvec4;
-pub(crate) use template::{euclidean, example_uses};
+pub(crate) use template::{arithmetic, euclidean, example_uses};

@@ -329,7 +329,7 @@ macro_rules! columns {
             ///
             /// ```
             #[doc = $crate::matrix::template::example_uses!($m, $v)]
-            /// assert!(M::NAN.is_nan() && !(M::IDENTITY * f32::INFINITY).is_nan());
+            /// assert!(M::NAN.is_nan() && !M::from_diagonal(V::splat(f32::INFINITY)).is_nan());
             /// ```
             #[inline]
             #[must_use]
@@ -594,16 +594,6 @@ macro_rules! columns {
             }
         }
 
-        impl core::ops::Mul<$m> for f32 {
-            type Output = $m;
-
-            /// Every entry of `m` times `self`, as `m * self`.
-            #[inline]
-            fn mul(self, m: $m) -> $m {
-                m * self
-            }
-        }
-
         impl core::ops::Div<f32> for $m {
             type Output = $m;
 
@@ -645,45 +635,7 @@ macro_rules! columns {
             }
         }
 
-        impl core::ops::MulAssign<f32> for $m {
-            /// `*self = *self * s`.
-            #[inline]
-            fn mul_assign(&mut self, s: f32) {
-                *self = *self * s;
-            }
-        }
-
-        impl core::ops::DivAssign<f32> for $m {
-            /// `*self = *self / s`.
-            #[inline]
-            fn div_assign(&mut self, s: f32) {
-                *self = *self / s;
-            }
-        }
-
-        impl core::ops::AddAssign for $m {
-            /// `*self = *self + o`.
-            #[inline]
-            fn add_assign(&mut self, o: $m) {
-                *self = *self + o;
-            }
-        }
-
-        impl core::ops::SubAssign for $m {
-            /// `*self = *self - o`.
-            #[inline]
-            fn sub_assign(&mut self, o: $m) {
-                *self = *self - o;
-            }
-        }
-
-        impl core::iter::Sum for $m {
-            /// The entry-wise sum, from zero, left to right.
-            #[inline]
-            fn sum<I: Iterator<Item = $m>>(iter: I) -> $m {
-                iter.fold($m::ZERO, |a, b| a + b)
-            }
-        }
+        $crate::vec::arithmetic!($m, zero $m::ZERO);
 
         impl core::iter::Product for $m {
             /// The matrix product, from the identity, left to right.

@@ -40,6 +40,7 @@ macro_rules! against_glam {
                 vbits(a.$mul_v(v), ga.$mul_v(gv));
                 assert_eq!(bits(a.abs()), gbits(ga.abs()));
                 assert_eq!(bits([a, b, a].into_iter().sum()), gbits([ga, gb, ga].into_iter().sum()));
+                assert_eq!(bits([a, b].iter().sum()), gbits([ga, gb].iter().sum()));
                 assert_eq!(bits([a, b, a].into_iter().product()), gbits([ga, gb, ga].into_iter().product()));
                 let mut c = a;
                 c += b;

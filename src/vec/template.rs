@@ -194,14 +194,6 @@ macro_rules! euclidean {
                 Self { $first: self.$first * s $(, $rest: self.$rest * s)* }
             }
         }
-        impl core::ops::Mul<$t> for f32 {
-            type Output = $t;
-            /// Every component of `v` times `self`, as `v * self`.
-            #[inline]
-            fn mul(self, v: $t) -> $t {
-                v * self
-            }
-        }
         impl core::ops::Div<f32> for $t {
             type Output = Self;
             /// Every component divided by `s` (IEEE 754: by zero gives
@@ -209,6 +201,23 @@ macro_rules! euclidean {
             #[inline]
             fn div(self, s: f32) -> Self {
                 Self { $first: self.$first / s $(, $rest: self.$rest / s)* }
+            }
+        }
+        $crate::vec::arithmetic!($t, zero Self { $first: 0.0 $(, $rest: 0.0)* });
+    };
+}
+
+/// What follows from a type's `+`, `-`, `* f32` and `/ f32`, written once
+/// for the vectors, [`Quat`](crate::Quat) and the matrices: the assigning
+/// forms, `f32 * $t`, and the sum of an iterator, from `$zero`.
+macro_rules! arithmetic {
+    ($t:ident, zero $zero:expr) => {
+        impl core::ops::Mul<$t> for f32 {
+            type Output = $t;
+            /// Every component of `v` times `self`, as `v * self`.
+            #[inline]
+            fn mul(self, v: $t) -> $t {
+                v * self
             }
         }
         impl core::ops::AddAssign for $t {
@@ -243,7 +252,7 @@ macro_rules! euclidean {
             /// The component-wise sum, from zero, left to right.
             #[inline]
             fn sum<I: Iterator<Item = Self>>(iter: I) -> Self {
-                iter.fold(Self { $first: 0.0 $(, $rest: 0.0)* }, |a, b| a + b)
+                iter.fold($zero, |a, b| a + b)
             }
         }
         impl<'a> core::iter::Sum<&'a $t> for $t {
@@ -586,4 +595,4 @@ macro_rules! coordinates {
 mod lengths;
 
 pub(crate) use lengths::lengths;
-pub(crate) use {coordinates, euclidean, example_uses};
+pub(crate) use {arithmetic, coordinates, euclidean, example_uses};
