@@ -7,66 +7,51 @@ use crate::other_names::renamed;
 use crate::quat::Quat;
 use crate::vec::{Cvec3, Cvec4};
 
-renamed! {
-    /// glam's `vec3(x, y, z)`: here [`Cvec3::new`], the notes' `Cvec3`.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// assert_eq!(rigtform::vec3(1.0, 2.0, 3.0), rigtform::Cvec3::new(1.0, 2.0, 3.0));
-    /// ```
-    note "the notes' 3-vector is `Cvec3`: use `Cvec3::new(x, y, z)`";
-    pub const fn vec3(x: f32, y: f32, z: f32) -> Cvec3 {
-        Cvec3::new(x, y, z)
-    }
+/// Each glam function `name(args) -> T` as a deprecated function of the
+/// same arguments that returns the crate's `T::constructor(args)`, its
+/// example the two called with `example`'s arguments.
+macro_rules! glam_constructors {
+    ($(
+        $name:ident($($arg:ident: $ty:ty),*) -> $t:ident::$new:ident, e.g. ($($ex:expr),*),
+        note $note:literal;
+    )*) => {
+        $(
+            renamed! {
+                #[doc = concat!(
+                    "glam's `", stringify!($name), "(", stringify!($($arg),*), ")`: here [`",
+                    stringify!($t), "::", stringify!($new), "`]."
+                )]
+                ///
+                /// ```
+                /// # #![allow(deprecated)]
+                /// use rigtform::*;
+                #[doc = concat!(
+                    "assert_eq!(", stringify!($name), "(", stringify!($($ex),*), "), ",
+                    stringify!($t), "::", stringify!($new), "(", stringify!($($ex),*), "));"
+                )]
+                /// ```
+                note $note;
+                pub const fn $name($($arg: $ty),*) -> $t {
+                    $t::$new($($arg),*)
+                }
+            }
+        )*
+    };
+}
 
-    /// glam's `vec4(x, y, z, w)`: here [`Cvec4::new`], the notes' `Cvec4`.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// assert_eq!(rigtform::vec4(1.0, 2.0, 3.0, 1.0), rigtform::Cvec4::new(1.0, 2.0, 3.0, 1.0));
-    /// ```
-    note "the notes' 4-vector is `Cvec4`: use `Cvec4::new(x, y, z, w)` (or `Cvec4::from_point(p)`)";
-    pub const fn vec4(x: f32, y: f32, z: f32, w: f32) -> Cvec4 {
-        Cvec4::new(x, y, z, w)
-    }
-
-    /// glam's `quat(x, y, z, w)`: here [`Quat::from_xyzw`], which names
-    /// its order.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::Quat;
-    /// assert_eq!(rigtform::quat(0.0, 0.0, 0.0, 1.0), Quat::IDENTITY);
-    /// ```
-    note "use `Quat::from_xyzw(x, y, z, w)`, which names its order";
-    pub const fn quat(x: f32, y: f32, z: f32, w: f32) -> Quat {
-        Quat::from_xyzw(x, y, z, w)
-    }
-
-    /// glam's `mat3(x_axis, y_axis, z_axis)`: here [`Matrix3::from_cols`].
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Cvec3, Matrix3};
-    /// assert_eq!(rigtform::mat3(Cvec3::X, Cvec3::Y, Cvec3::Z), Matrix3::IDENTITY);
-    /// ```
-    note "use `Matrix3::from_cols(x_axis, y_axis, z_axis)`";
-    pub const fn mat3(x_axis: Cvec3, y_axis: Cvec3, z_axis: Cvec3) -> Matrix3 {
-        Matrix3::from_cols(x_axis, y_axis, z_axis)
-    }
-
-    /// glam's `mat4(x_axis, y_axis, z_axis, w_axis)`: here
-    /// [`Matrix4::from_cols`].
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Cvec4, Matrix4};
-    /// assert_eq!(rigtform::mat4(Cvec4::X, Cvec4::Y, Cvec4::Z, Cvec4::W), Matrix4::IDENTITY);
-    /// ```
-    note "use `Matrix4::from_cols(x_axis, y_axis, z_axis, w_axis)`";
-    pub const fn mat4(x_axis: Cvec4, y_axis: Cvec4, z_axis: Cvec4, w_axis: Cvec4) -> Matrix4 {
-        Matrix4::from_cols(x_axis, y_axis, z_axis, w_axis)
-    }
+glam_constructors! {
+    vec3(x: f32, y: f32, z: f32) -> Cvec3::new, e.g. (1.0, 2.0, 3.0),
+        note "the notes' 3-vector is `Cvec3`: use `Cvec3::new(x, y, z)`";
+    vec4(x: f32, y: f32, z: f32, w: f32) -> Cvec4::new, e.g. (1.0, 2.0, 3.0, 1.0),
+        note "the notes' 4-vector is `Cvec4`: use `Cvec4::new(x, y, z, w)` (or `Cvec4::from_point(p)`)";
+    quat(x: f32, y: f32, z: f32, w: f32) -> Quat::from_xyzw, e.g. (0.0, 0.0, 0.6, 0.8),
+        note "use `Quat::from_xyzw(x, y, z, w)`, which names its order";
+    mat3(x_axis: Cvec3, y_axis: Cvec3, z_axis: Cvec3) -> Matrix3::from_cols,
+        e.g. (Cvec3::Y, -Cvec3::X, Cvec3::Z),
+        note "use `Matrix3::from_cols(x_axis, y_axis, z_axis)`";
+    mat4(x_axis: Cvec4, y_axis: Cvec4, z_axis: Cvec4, w_axis: Cvec4) -> Matrix4::from_cols,
+        e.g. (Cvec4::X, Cvec4::Y, Cvec4::Z, Cvec4::new(1.0, 2.0, 3.0, 1.0)),
+        note "use `Matrix4::from_cols(x_axis, y_axis, z_axis, w_axis)`";
 }
 
 #[cfg(test)]
