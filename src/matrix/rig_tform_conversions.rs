@@ -1,18 +1,21 @@
 //! The rigid body transform a [`Matrix4`] holds: `RigTForm::try_from`,
-//! with [`NotRigid`] when it holds none, and nalgebra's name for the other
-//! way. They live with the matrices, which `RigTForm` does not know of.
+//! with [`NotRigid`] when it holds none, and glam's name for it
+//! (`from_mat4`, deprecated: it leads to `try_from`); nalgebra's names for
+//! the other way. They live with the matrices, which `RigTForm` does not
+//! know of.
 
 use core::fmt;
 
 use crate::matrix::Matrix4;
+use crate::other_names::renamed;
 use crate::quat::Quat;
 use crate::rigtform::RigTForm;
 
 impl RigTForm {
     /// glam's `Affine3A::from_mat4(m)`, which keeps whatever the matrix
     /// holds: a `RigTForm` holds only a rotation and a translation, so here
-    /// it is [`RigTForm::try_from(m)`](#impl-TryFrom%3CMatrix4%3E-for-RigTForm),
-    /// which says when the matrix is not rigid ([`NotRigid`]).
+    /// it is `RigTForm::try_from(m)`, which says when the matrix is not
+    /// rigid ([`NotRigid`]).
     ///
     /// ```
     /// # #![allow(deprecated)]
@@ -32,45 +35,39 @@ impl RigTForm {
         Self::try_from(m)
     }
 
-    /// nalgebra's `Isometry3::to_matrix`: here `Matrix4::from(a)`.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Matrix4, RigTForm};
-    /// let a = RigTForm::from_rotation_x(0.3);
-    /// assert_eq!(a.to_matrix(), Matrix4::from(a));
-    /// ```
-    #[deprecated(
-        since = "0.1.0",
-        note = "use `Matrix4::from(a)` (or `Matrix4::from_rig_tform`)"
-    )]
-    #[inline]
-    #[must_use]
-    pub fn to_matrix(self) -> Matrix4 {
-        Matrix4::from_rig_tform(self)
-    }
+    renamed! {
+        /// nalgebra's `Isometry3::to_matrix`: here `Matrix4::from(a)`.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Matrix4, RigTForm};
+        /// let a = RigTForm::from_rotation_x(0.3);
+        /// assert_eq!(a.to_matrix(), Matrix4::from(a));
+        /// ```
+        note "use `Matrix4::from(a)` (or `Matrix4::from_rig_tform`)";
+        pub fn to_matrix(self) -> Matrix4 {
+            Matrix4::from_rig_tform(self)
+        }
 
-    /// nalgebra's `Isometry3::to_homogeneous`: here `Matrix4::from(a)`.
-    ///
-    /// ```
-    /// # #![allow(deprecated)]
-    /// use rigtform::{Matrix4, RigTForm};
-    /// let a = RigTForm::from_rotation_x(0.3);
-    /// assert_eq!(a.to_homogeneous(), Matrix4::from(a));
-    /// ```
-    #[deprecated(
-        since = "0.1.0",
-        note = "use `Matrix4::from(a)` (or `Matrix4::from_rig_tform`)"
-    )]
-    #[inline]
-    #[must_use]
-    pub fn to_homogeneous(self) -> Matrix4 {
-        Matrix4::from_rig_tform(self)
+        /// nalgebra's `Isometry3::to_homogeneous`, the same matrix as its
+        /// `to_matrix`: here `Matrix4::from(a)` too.
+        ///
+        /// ```
+        /// # #![allow(deprecated)]
+        /// use rigtform::{Matrix4, RigTForm};
+        /// let a = RigTForm::from_translation(rigtform::Cvec3::X);
+        /// assert_eq!(a.to_homogeneous(), a.to_matrix());
+        /// ```
+        note "use `Matrix4::from(a)` (or `Matrix4::from_rig_tform`)";
+        pub fn to_homogeneous(self) -> Matrix4 {
+            Matrix4::from_rig_tform(self)
+        }
     }
 }
 
-/// The error of [`RigTForm::try_from`] a matrix (or, with the `glam`
-/// feature, a `glam::Affine3A`) that is not a rigid body transform: it
+/// The error of [`RigTForm::try_from`] a matrix (or, with a glam feature,
+/// a `glam::Affine3A` or `glam::Mat4`; with `nalgebra`, a
+/// `nalgebra::Matrix4<f32>`) that is not a rigid body transform: it
 /// scales, shears, mirrors or projects, or has a NaN or infinite entry.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct NotRigid {
