@@ -351,8 +351,9 @@ macro_rules! columns {
 
             /// glam's `try_inverse`: the inverse, or `None` where there is
             /// none to give, which is what [`inverse`](Self::inverse)
-            /// returns here (glam's `inverse` returns a matrix, and panics
-            /// or gives non-finite entries for a singular one).
+            /// returns here (glam's `inverse` returns a matrix: non-finite
+            /// entries for a singular one, or a panic with glam's assert
+            /// features).
             ///
             /// # Preconditions and accuracy
             ///

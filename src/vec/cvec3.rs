@@ -1,7 +1,9 @@
 //! [`Cvec3`], the notes' coordinate 3-vector: a point or a direction.
 //! Its own methods here (the cross product, reflection, the angle between
-//! two directions); what it shares with [`Cvec4`] and [`Quat`](crate::Quat)
-//! is written once in `vec/template.rs` and instanced at the bottom.
+//! two directions, perpendiculars and orthonormal pairs); what it shares
+//! with [`Cvec4`] and [`Quat`](crate::Quat) is written once in
+//! `vec/template.rs` and instanced at the bottom. Its turns by angles
+//! (`rotate_x`, `slerp`) are with the quaternions, in `quat/vec_rotations.rs`.
 
 use super::template::{coordinates, euclidean};
 use super::Cvec4;
@@ -185,9 +187,7 @@ impl Cvec3 {
             _ => f32::NAN,
         }
     }
-}
 
-impl Cvec3 {
     /// A vector perpendicular to `self`, of no particular length (glam's
     /// `any_orthogonal_vector`, the same formula): `self x Y` or
     /// `self x X`, whichever is the longer, so it is zero only for the
