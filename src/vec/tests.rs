@@ -571,4 +571,7 @@ fn cvec3_helpers_and_homogeneous_forms_are_glams_bit_for_bit() {
             glam::Vec3::from_homogeneous(glam::Vec4::from((ga, w))),
         );
     }
+    // Where |x| = |y|, glam takes the cross product with X.
+    let tie = Cvec3::new(1.0, -1.0, 2.0);
+    bits(tie.any_orthogonal_vector(), g3(tie).any_orthogonal_vector());
 }
