@@ -148,6 +148,18 @@ impl From<Matrix3> for na::Matrix3<f32> {
     }
 }
 
+impl TryFrom<na::Matrix4<f32>> for RigTForm {
+    type Error = crate::NotRigid;
+
+    /// The rigid body transform of a homogeneous matrix that holds one, as
+    /// [`RigTForm::try_from`] a [`Matrix4`] (nalgebra's
+    /// `na::try_convert::<_, Isometry3<f32>>(m)`): [`NotRigid`](crate::NotRigid)
+    /// for a scale, a shear, a mirror or a projection.
+    fn try_from(m: na::Matrix4<f32>) -> Result<Self, crate::NotRigid> {
+        RigTForm::try_from(Matrix4::from(m))
+    }
+}
+
 impl From<na::Isometry3<f32>> for RigTForm {
     /// The translation and the rotation, exact: an `Isometry3` is a
     /// `RigTForm { t, r }` by another name.
@@ -169,18 +181,6 @@ impl From<RigTForm> for na::Isometry3<f32> {
             rotation: a.r.into(),
             translation: na::Translation3::from(na::Vector3::from(a.t)),
         }
-    }
-}
-
-impl TryFrom<na::Matrix4<f32>> for RigTForm {
-    type Error = crate::NotRigid;
-
-    /// The rigid body transform of a homogeneous matrix that holds one, as
-    /// [`RigTForm::try_from`] a [`Matrix4`] (nalgebra's
-    /// `na::try_convert::<_, Isometry3<f32>>(m)`): [`NotRigid`](crate::NotRigid)
-    /// for a scale, a shear, a mirror or a projection.
-    fn try_from(m: na::Matrix4<f32>) -> Result<Self, crate::NotRigid> {
-        RigTForm::try_from(Matrix4::from(m))
     }
 }
 
