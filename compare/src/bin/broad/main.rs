@@ -14,7 +14,12 @@
 //! Accepts BROAD trials (as CSV, or gzipped like the one in the testkit's `data/`)
 //! and x-io's Fusion sample log (no ground truth: a summary only). The data
 //! and its origin are described in the README's IMU section.
+//!
+//! With `--hash`, it prints only a fingerprint of our estimates on each
+//! BROAD trial ([`fingerprint`]), to show that a change of the code leaves
+//! every estimate the same to the bit.
 
+mod fingerprint;
 mod plot;
 mod pypi;
 mod uf_ahrs;
@@ -62,6 +67,10 @@ struct Args {
     /// `FilterParams::DEFAULT`; BROAD's sensor: 0.011).
     #[arg(long, default_value_t = 0.0, value_parser = finite_seconds)]
     mag_delay: f32,
+    /// Print only, for each BROAD trial, the FNV-1a hash of the bits of
+    /// our every 6D and 9D estimate (no peers, no tables, no plot).
+    #[arg(long, conflicts_with = "plot")]
+    hash: bool,
 }
 
 /// A delay in seconds: a finite number.
@@ -150,6 +159,12 @@ fn evaluate(args: &Args) -> Result<(), String> {
         mag_delay: args.mag_delay,
         ..FilterParams::DEFAULT
     };
+    if args.hash {
+        for (name, _, samples) in &trials {
+            println!("{}", fingerprint::line(name, samples, params));
+        }
+        return Ok(());
+    }
     let scripts = if trials.is_empty() {
         None
     } else {
