@@ -1,9 +1,10 @@
 //! The rest detector of the [`OrientationFilter`](super::OrientationFilter):
 //! while the sensor lies still, the gyro reads its bias.
 
-use super::filter::{HALF_TURN_SQUARED, MAX_SPECIFIC_FORCE};
-use super::low_pass::{low_pass, smoothing_factor};
-use super::FilterParams;
+use super::gyro::HALF_TURN_SQUARED;
+use super::inclination::MAX_SPECIFIC_FORCE;
+use crate::attitude::low_pass::{low_pass, smoothing_factor};
+use crate::attitude::params::FilterParams;
 use crate::vec::Cvec3;
 
 /// Time constant of the low-passes behind rest detection, in seconds.
