@@ -229,9 +229,11 @@ fn glitches() -> Vec<Glitch> {
         },
         // A turn of 12° in one sample, taken as real: the inclination is
         // off by as much, and the field fails its gate until the
-        // accelerometer has corrected it to within about 5°.
+        // accelerometer has corrected it to within about 5°; the last
+        // degrees, corrected slower than `max_bias`, read as bias (see the
+        // bursts below).
         Glitch {
-            settle: 100.0,
+            settle: 110.0,
             slack: 4.0,
             off: 700,
             ..skip(
@@ -319,8 +321,14 @@ fn every_glitch_is_flagged_skipped_or_corrected_and_the_estimate_comes_back() {
                     o.inclination_6d
                 );
             } else {
-                // After a burst, the estimate comes back.
-                assert!(o.recovered <= 90.0, "{name} burst: {}", o.recovered);
+                // After a burst, the estimate comes back. The last 6° of a
+                // lost turn are corrected slower than `max_bias` and read
+                // as bias, which the fast turns of the trial keep
+                // uncertain (the variance floor of a gyro scale error) and
+                // so learn and unlearn over `tau_bias` and more: within
+                // 0.1° of the clean run 95 s after a burst of unusable gyro
+                // readings, 94 s after a burst of unusable `dt`.
+                assert!(o.recovered <= 100.0, "{name} burst: {}", o.recovered);
             }
         }
     }

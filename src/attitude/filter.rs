@@ -69,7 +69,7 @@ use rest::RestDetector;
 /// Executed instructions per update on the emulated Cortex-M4F (QEMU
 /// mps2-an386, opt-level "s", LTO), counted by `cargo xtask filter-cost`,
 /// which fails above the budget of 1,600 (6D) and 2,200 (9D) instructions
-/// and 256 bytes of state: 1,482 (6D) and 2,138 (9D; 2,163 with
+/// and 256 bytes of state: 1,505 (6D) and 2,160 (9D; 2,185 with
 /// `mag_delay` set).
 ///
 /// # Bad input
@@ -428,7 +428,7 @@ impl OrientationFilter {
         }
         self.flags.set(Flags::GYRO_SATURATED, reading.saturated);
         self.flags.set(Flags::RESTING, resting);
-        self.bias.predict(gyr, resting, dt, &p);
+        self.bias.predict(self.rest.rate(), resting, dt, &p);
 
         // 3. The strapdown attitude.
         self.strapdown = self.strapdown.integrate(gyr - self.bias.estimate, dt);

@@ -40,12 +40,15 @@ pub struct FilterParams {
     /// average's delay. Infinite: no bias estimation during motion.
     pub tau_bias: f32,
     /// How fast the true gyro bias wanders, as a random walk, in rad/s per
-    /// square root of a second (default 0.01 °/s/√s, 1.75e-4: 0.1 °/s in
-    /// 100 s, a MEMS gyro's bias temperature coefficient of a few hundredths
-    /// of a °/s per kelvin over the kelvin or two a device warms by in
-    /// minutes). It sets how fast the bias estimate's uncertainty grows
-    /// while nothing measures it, and so how much weight a correction
-    /// during motion gets (see `bias_noise`).
+    /// square root of a second (default 5e-5, 0.003 °/s/√s: 0.07 °/s in
+    /// ten minutes). A MEMS gyro's bias moves mostly with its temperature,
+    /// by 0.01 to 0.03 °/s per kelvin (datasheets), and a carried device
+    /// warms by a kelvin or two in its first minutes: 0.01 to 0.06 °/s in
+    /// ten minutes, which the default covers. It sets how fast the bias
+    /// estimate's uncertainty grows while nothing measures it, and so how
+    /// much weight a correction during motion gets (see `bias_noise`): a
+    /// larger value lets the leaks of linear acceleration into the
+    /// corrections move a bias learned at rest.
     pub bias_drift: f32,
     /// During motion, each inclination correction, seen in the sensor
     /// frame, measures the bias, with this noise density in rad/s per
@@ -56,8 +59,10 @@ pub struct FilterParams {
     /// density of `sqrt(2 * 3 s) * 0.23 °/s`. The bias follows the
     /// corrections as a Kalman filter does: with the time constant
     /// `bias_noise^2 / variance`, where `variance` is the estimate's
-    /// (which starts at `max_bias^2`, falls to about (0.01 °/s)^2 at rest
-    /// and grows with `bias_drift`), but never faster than `tau_bias`.
+    /// (which starts at `max_bias^2`, falls to about (0.01 °/s)^2 at rest,
+    /// grows with `bias_drift`, and in motion stays at least what a gyro
+    /// scale error of 0.1 % makes of the rate), but never faster than
+    /// `tau_bias`.
     /// Right after a rest the bias is known and motion barely moves it; a
     /// bias that was never seen at rest is learned within minutes.
     /// Infinite: no bias estimation during motion.
@@ -164,7 +169,7 @@ impl FilterParams {
         tau_acc: 3.0,
         tau_mag: 10.0,
         tau_bias: 20.0,
-        bias_drift: 1.75e-4,
+        bias_drift: 5e-5,
         bias_noise: 0.01,
         tau_bias_rest: 3.0,
         rest_gyro: 0.035,

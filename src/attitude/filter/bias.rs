@@ -2,7 +2,7 @@
 //! the bias wanders, which learns the raw gyro at rest and, in motion, the
 //! inclination corrections seen in the sensor frame.
 
-use super::min_max::min;
+use super::min_max::{max, min};
 use crate::attitude::low_pass::{butterworth_step, low_pass, smoothing_factor};
 use crate::attitude::params::FilterParams;
 use crate::quat::Quat;
@@ -13,6 +13,18 @@ use crate::vec::Cvec3;
 /// over `tau_bias_rest` (3 s) leaves 0.004 °/s, and the bias moves by
 /// about as much again within the low-pass's delay.
 const REST_BIAS_SIGMA: f32 = 0.01 * core::f32::consts::PI / 180.0;
+
+/// The time constant, in seconds, over which the variance grows towards a
+/// lasting disagreement at rest: twice the rest detector's low-pass, so
+/// that the start of a motion, which the detector sees within a few tenths
+/// of a second, is over before the estimate learns again, while a bias
+/// that jumped at rest (by 1 °/s, say) is learned again within seconds.
+const REST_ESCAPE_TAU: f32 = 1.0;
+
+/// A calibrated MEMS gyro's scale and cross-axis errors, as a fraction of
+/// the rate (0.1 %: datasheets give 0.5 to 2 % before calibration, and a
+/// calibration leaves a tenth of that).
+const SCALE_ERROR: f32 = 0.001;
 
 /// The bias estimate, its variance, and the attitude through the
 /// accelerometer's low-pass, through which the corrections measure it.
@@ -66,22 +78,45 @@ impl Bias {
         }
     }
 
-    /// The prediction over `dt` seconds: the variance grows as the bias
-    /// wanders (`bias_drift`), up to `max_bias^2`, to which the estimate
-    /// is clipped. While `resting`, the raw gyro `gyr` reads the bias plus
-    /// noise: the estimate follows it over `tau_bias_rest`, and the
-    /// variance falls towards what that average leaves.
+    /// The prediction over `dt` seconds, with `rate` the rest detector's
+    /// 0.5 s low-pass of the gyro: the variance grows as the bias wanders
+    /// (`bias_drift`), and in motion it is at least what a gyro scale error
+    /// makes of the rate: a calibrated gyro's scale and cross-axis errors of
+    /// [`SCALE_ERROR`] read a turn at `w` as a bias of `SCALE_ERROR * |w|`
+    /// more, which no rest showed. It stays below `max_bias^2`, as the
+    /// estimate is clipped to `max_bias` (which also keeps it finite).
+    ///
+    /// While `resting`, the low-pass reads the bias plus averaged noise,
+    /// and the estimate follows it over `tau_bias_rest` while it is within
+    /// three standard deviations of the estimate (its variance plus the
+    /// low-pass's own, [`REST_BIAS_SIGMA`]^2); the variance then falls
+    /// towards that of the low-pass. A low-pass further off is the start
+    /// of a motion that the rest detector has not seen yet (it sees one a
+    /// tenth of a second or more late), whose readings would move the
+    /// estimate by what the sensor turned, and teaches nothing; if the
+    /// disagreement lasts, the variance grows towards it over
+    /// [`REST_ESCAPE_TAU`], and a bias that really moved at rest is learned
+    /// again.
     #[inline]
-    pub(super) fn predict(&mut self, gyr: Cvec3, resting: bool, dt: f32, p: &FilterParams) {
-        self.variance = min(
-            self.variance + p.bias_drift * p.bias_drift * dt,
-            p.max_bias * p.max_bias,
-        );
-        if resting {
+    pub(super) fn predict(&mut self, rate: Cvec3, resting: bool, dt: f32, p: &FilterParams) {
+        let most = p.max_bias * p.max_bias;
+        let drifted = self.variance + p.bias_drift * p.bias_drift * dt;
+        let offset = rate - self.estimate;
+        let disagreement = offset.norm_squared();
+        if !resting {
+            let scale = SCALE_ERROR * SCALE_ERROR * disagreement;
+            self.variance = min(max(drifted, scale), most);
+            return;
+        }
+        self.variance = min(drifted, most);
+        let rest = REST_BIAS_SIGMA * REST_BIAS_SIGMA;
+        if disagreement <= 9.0 * (self.variance + rest) {
             let alpha = smoothing_factor(dt, p.tau_bias_rest);
-            self.set(low_pass(self.estimate, gyr, alpha), p.max_bias);
-            let rest = REST_BIAS_SIGMA * REST_BIAS_SIGMA;
+            self.set(low_pass(self.estimate, rate, alpha), p.max_bias);
             self.variance += (rest - self.variance) * alpha;
+        } else {
+            let alpha = smoothing_factor(dt, REST_ESCAPE_TAU);
+            self.variance += (min(disagreement, most) - self.variance) * alpha;
         }
     }
 

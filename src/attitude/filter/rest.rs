@@ -100,6 +100,13 @@ impl RestDetector {
     pub(super) fn is_resting(&self, p: &FilterParams) -> bool {
         self.time >= p.rest_time
     }
+
+    /// The gyro's 0.5 s low-pass, rad/s: at rest, the bias plus averaged
+    /// noise; in motion, the rate over the last half second.
+    #[inline]
+    pub(super) fn rate(&self) -> Cvec3 {
+        self.gyro
+    }
 }
 
 #[cfg(test)]
