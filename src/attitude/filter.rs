@@ -49,7 +49,8 @@ use rest::RestDetector;
 /// vertical only (a disturbed field can never tilt the estimate) towards
 /// magnetic north, by the fraction `1 - exp(-dt / tau_mag)` of the heading
 /// error, while the field, less a learned hard-iron estimate (a magnet
-/// carried with the sensor), passes the disturbance gate. The gyro bias
+/// carried with the sensor, of any size, learned as the sensor's attitude
+/// varies), passes the disturbance gate. The gyro bias
 /// follows the raw gyro at rest and, in motion, the inclination
 /// corrections seen in the sensor frame, as a scalar Kalman filter would;
 /// the heading correction never feeds it.
@@ -69,7 +70,7 @@ use rest::RestDetector;
 /// Executed instructions per update on the emulated Cortex-M4F (QEMU
 /// mps2-an386, opt-level "s", LTO), counted by `cargo xtask filter-cost`,
 /// which fails above the budget of 1,600 (6D) and 2,200 (9D) instructions
-/// and 256 bytes of state: 1,505 (6D) and 2,160 (9D; 2,185 with
+/// and 256 bytes of state: 1,479 (6D) and 2,137 (9D; 2,162 with
 /// `mag_delay` set).
 ///
 /// # Bad input
@@ -115,9 +116,11 @@ use rest::RestDetector;
 ///   gives the reference to the current field once the inclination is
 ///   known, and the hard-iron estimate starts over. The estimate moves
 ///   towards a reading by at most the fraction `1 - exp(-dt / tau_mag)` of
-///   the reference's length, and stays within twice that length; a usable
-///   reading that the estimate, taken off, would make unusable starts it
-///   over.
+///   the reference's length, and stays within twice that length; a
+///   reading further than three times that length from the reference
+///   (which no estimate within its bound explains) teaches it nothing; a
+///   usable reading that the estimate, taken off, would make unusable
+///   starts it over.
 /// - Parameters: zero or negative time constants mean "immediate" (no
 ///   smoothing), infinite ones "never". While any parameter is NaN, every
 ///   update returns [`Quat::NAN`] and leaves the state unchanged.
@@ -463,12 +466,15 @@ impl OrientationFilter {
         // corrected in this sample, and slower than `max_bias` (a faster
         // correction is convergence, after a gap in the gyro, say, whose
         // attitude gets the field's dip wrong).
+        let mut attitude = self.attitude();
         let heading = mag.map(|mag| {
             let rate = gyr - self.bias.estimate;
             let turning = !resting && rate.norm_squared() > p.rest_gyro * p.rest_gyro;
             let level = corrected && self.acc_error <= p.max_bias * dt;
             let mag = undelayed(mag, rate, p.mag_delay);
-            self.correct_heading(mag, dt, turning, settled && level)
+            let variety = self.bias.variety();
+            let known = settled && level;
+            self.correct_heading(mag, dt, turning, known, variety, &mut attitude)
         });
         self.flags
             .set(Flags::MAG_IGNORED, heading.is_some_and(|h| h.is_none()));
@@ -477,7 +483,6 @@ impl OrientationFilter {
         // 6. The bias in motion, from the inclination correction alone (a
         // magnetic disturbance must not reach it), once settled (before,
         // the corrections are convergence).
-        let attitude = self.attitude();
         if acc.is_some() {
             self.bias.average_axes(attitude, factors, first);
         }
@@ -495,13 +500,30 @@ impl OrientationFilter {
     /// disturbance gate. Returns the heading error it saw (radians east of
     /// north), `None` if the field was not used. The hard-iron estimate
     /// learns from the field if the sensor is `turning` and the attitude
-    /// `known`, and fades while the sensor is not turning.
-    fn correct_heading(&mut self, mag: Cvec3, dt: f32, turning: bool, known: bool) -> Option<f32> {
+    /// `known`, a growing estimate in the share `variety` of the
+    /// attitudes' variety if the field passed, and fades while the sensor
+    /// is not turning. `attitude` is the filter's, which a correction
+    /// turns as it turns `correction`.
+    fn correct_heading(
+        &mut self,
+        mag: Cvec3,
+        dt: f32,
+        turning: bool,
+        known: bool,
+        variety: f32,
+        attitude: &mut Quat,
+    ) -> Option<f32> {
         let p = self.params;
-        let attitude = self.attitude();
-        let length = self.heading.reference().norm();
+        let here = *attitude;
+        let reference = self.heading.reference();
+        let length = reference.norm();
         let radius = p.mag_gate * length;
-        let mut reading = self.hard_iron.take_off(mag, attitude, radius)?;
+        let open = self.heading.is_open();
+        let share = self.hard_iron.share(radius, open);
+        let mut reading = self.hard_iron.take_off(mag, here, share)?;
+        let unconfirmed = self
+            .hard_iron
+            .unconfirmed(mag, here, reference, radius, open);
         let verdict = self
             .heading
             .gate(reading.seen(), mag, length, radius, known, dt);
@@ -509,14 +531,16 @@ impl OrientationFilter {
             Verdict::Set => 1.0,
             _ => smoothing_factor(dt, min(p.tau_mag, self.settling)),
         };
+        let mut field = reading.field;
         match verdict {
             Verdict::Set => {}
             // The hard-iron estimate, part of the model that failed,
             // starts over, and the field as read becomes the reference.
             Verdict::Renew => {
-                if let Some(raw) = self.hard_iron.forget(mag, attitude) {
+                if let Some(raw) = self.hard_iron.forget(mag, here) {
                     reading = raw;
                 }
+                field = reading.field;
                 self.heading.renew(reading.seen());
             }
             Verdict::Follow {
@@ -527,23 +551,32 @@ impl OrientationFilter {
             } => {
                 // The estimate's step is clipped as the reference's: a
                 // single reading moves it by at most the fraction of the
-                // reference's length that the heading correction takes.
+                // reference's length that the heading correction takes. A
+                // kept-out field, if it is fixed to the sensor, must be
+                // learned to give the heading back, and is larger than
+                // what is fixed to the earth and passes; a field that
+                // passes is told from those only as the attitude varies.
                 if !turning {
                     self.hard_iron.fade(alpha);
-                } else if known {
+                } else if known && self.hard_iron.could_explain(pull) {
+                    let growth = if inside { variety } else { 1.0 };
                     self.hard_iron
-                        .learn(&reading, offset, fraction * pull, attitude, length);
+                        .learn(&reading, offset, fraction * pull, growth, here, length);
                 }
                 if !inside {
                     return None;
+                }
+                if let Some(partial) = unconfirmed {
+                    field = partial?;
                 }
             }
         }
         // The field's angle east of north; turning by it about +z brings
         // it to north.
-        let error = float::atan2(reading.field.x, reading.field.y);
-        let turn = Quat::from_rotation_z(error * fraction);
-        self.correction = (turn * self.correction).normalize();
+        let error = float::atan2(field.x, field.y);
+        let turn = heading::about_vertical(error * fraction);
+        self.correction = turn.turn(self.correction).normalize();
+        *attitude = self.attitude();
         Some(error)
     }
 

@@ -29,9 +29,11 @@ pub struct FilterParams {
     /// as the sensor moves, while a residual gyro bias of 0.1 °/s about the
     /// vertical drifts only 1° in 10 s. The hard-iron estimate (a field
     /// fixed to the sensor, such as a magnet carried with it) follows with
-    /// the same time constant: over it, the fields of a disturbance fixed
-    /// to the earth turn in the sensor frame as the sensor moves, and
-    /// average out.
+    /// the same time constant the fields the gate keeps out, and those it
+    /// passes in the share of the attitude's variety over the last
+    /// `tau_acc`: only as the sensor's attitude varies do the fields of a
+    /// disturbance fixed to the earth turn in the sensor frame and average
+    /// out.
     pub tau_mag: f32,
     /// The shortest time constant, in seconds, with which the gyro bias
     /// follows the corrections during motion (default 20 s): the bias loop
@@ -112,9 +114,10 @@ pub struct FilterParams {
     /// away, so that a single reading, however far off, barely moves it,
     /// while a new environment is accepted in the end (after 56 s for a
     /// field 30 % stronger, 102 s for one twice as strong; tested). The
-    /// filter's hard-iron estimate is taken off the measured field only
-    /// while it is longer than this fraction of the reference (in full
-    /// from twice that): a smaller one passes the gate anyway.
+    /// filter's hard-iron estimate is taken off the measured field in full
+    /// while the gate passes fields with it taken off (net); while the gate
+    /// has kept fields out, only an estimate longer than this fraction of
+    /// the reference is (see the filter's docs).
     pub mag_gate: f32,
     /// The gyro's full scale in rad/s (default `f32::MAX`: unknown, no
     /// saturation detected for finite readings; finite so that formats

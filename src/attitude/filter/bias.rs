@@ -135,6 +135,17 @@ impl Bias {
         }
     }
 
+    /// How much the attitude has varied over the last `tau_acc` seconds,
+    /// from 0 (a steady attitude) towards 1: the earth's horizontal axes
+    /// in the sensor frame, averaged as the accelerometer is, shrink as the
+    /// sensor turns about any axis, and their squared lengths' mean falls
+    /// from 1.
+    #[inline]
+    pub(super) fn variety(&self) -> f32 {
+        let [ex, ey] = self.axes_average;
+        max(1.0 - 0.5 * (ex.norm_squared() + ey.norm_squared()), 0.0)
+    }
+
     /// The update in motion: the inclination correction undid a drift of
     /// `-drift` (a rotation vector in the earth frame) in `dt`, which a
     /// bias error would cause. A correction faster than `max_bias` is

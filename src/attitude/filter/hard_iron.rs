@@ -1,6 +1,6 @@
 //! The hard-iron estimate: the field fixed to the sensor (a magnet, or a
 //! magnetized part, carried with it), which the calibration cannot know,
-//! learned while the sensor turns and taken off each reading.
+//! learned as the sensor's attitude varies and taken off each reading.
 
 use crate::float;
 use crate::quat::Quat;
@@ -49,27 +49,66 @@ impl HardIron {
         }
     }
 
-    /// The reading `mag` with the estimate taken off, in the earth frame
-    /// of `attitude`, if it can give a heading. The estimate is taken off
-    /// while it is longer than the gate's `radius`, in full from twice
-    /// that: a smaller one lets the field pass the gate as it is, and is
-    /// the calibration's residual error, which turns with the sensor and
-    /// so averages out of the heading, where an estimate of it, wandering
-    /// with the attitudes of the last `tau_mag` seconds, would not. A
+    /// The share of the estimate that the gate and the learning take off
+    /// a reading: all of it while the gate is `open` (the fields, with it
+    /// taken off, have passed, net) or while it is longer than the gate's
+    /// `radius`; none while it is within the radius and the gate has kept
+    /// fields out. A field fixed to the sensor tilts the heading whatever
+    /// its size (by its part across the horizontal field, over the
+    /// horizontal field), so a confirmed estimate is taken off whole; a
+    /// small one learned while fields were kept out may be the wander of
+    /// an estimate that a disturbance, a lagging magnetometer or the
+    /// calibration's residual made, and the field as read is judged.
+    #[inline]
+    pub(super) fn share(&self, radius: f32, open: bool) -> f32 {
+        if open || self.estimate.norm_squared() > radius * radius {
+            1.0
+        } else {
+            0.0
+        }
+    }
+
+    /// While the gate has kept fields out (not `open`), an estimate beyond
+    /// the gate's `radius` but within twice it is not confirmed: it may
+    /// hold part of a disturbance fixed to the earth, learned over the
+    /// attitudes the sensor turned through, which taken off whole would let
+    /// that disturbance's fields pass at those attitudes with its heading.
+    /// The heading is then turned only by the reading with the share
+    /// beyond the radius taken off (none at the radius, all from twice
+    /// it), if that passes the gate as well: this reading, in the earth
+    /// frame of `attitude`, or `None`. `Some(None)`: the estimate is in that
+    /// range and the reading fails the gate against `reference` once only
+    /// that share is taken off; `None`: the estimate is confirmed or small,
+    /// and the reading of [`share`](Self::share) turns the heading.
+    #[inline]
+    pub(super) fn unconfirmed(
+        &self,
+        mag: Cvec3,
+        attitude: Quat,
+        reference: Cvec3,
+        radius: f32,
+        open: bool,
+    ) -> Option<Option<Cvec3>> {
+        let strength = self.estimate.norm_squared();
+        if open || !(strength > radius * radius && strength < 4.0 * radius * radius) {
+            return None;
+        }
+        let beyond = float::sqrt(strength) / radius - 1.0;
+        let field = attitude * (mag - self.estimate * beyond);
+        let Some(horizontal) = horizontal_part(field) else {
+            return Some(None);
+        };
+        let passes = (Cvec3::new(horizontal, field.z, 0.0) - reference).norm() <= radius;
+        Some(passes.then_some(field))
+    }
+
+    /// The reading `mag` with the share `taken` of the estimate taken off,
+    /// in the earth frame of `attitude`, if it can give a heading. A
     /// reading that is usable as it is but not once the estimate is taken
     /// off (an estimate grown beyond any field, after huge glitches were
     /// taken for the reference) starts the estimate over.
     #[inline]
-    pub(super) fn take_off(&mut self, mag: Cvec3, attitude: Quat, radius: f32) -> Option<Reading> {
-        let strength = self.estimate.norm_squared();
-        let least = if radius > 0.0 { radius } else { 0.0 };
-        let taken = if strength > 4.0 * least * least {
-            1.0
-        } else if strength > least * least {
-            float::sqrt(strength) / least - 1.0
-        } else {
-            0.0
-        };
+    pub(super) fn take_off(&mut self, mag: Cvec3, attitude: Quat, taken: f32) -> Option<Reading> {
         let corrected = mag - self.estimate * taken;
         let field = attitude * corrected;
         if let Some(horizontal) = horizontal_part(field) {
@@ -99,6 +138,17 @@ impl HardIron {
         })
     }
 
+    /// Whether a reading whose step the reference takes in the share
+    /// `pull` (1, or the reference's length over the reading's distance
+    /// from it) could be explained by an estimate: one further from the
+    /// reference than `MAX_HARD_IRON + 1` times its length would need an
+    /// estimate beyond its bound, and is a glitch (1e30, a register read
+    /// unscaled), not a field, which teaches it nothing.
+    #[inline]
+    pub(super) fn could_explain(&self, pull: f32) -> bool {
+        pull * (MAX_HARD_IRON + 1.0) >= 1.0
+    }
+
     /// Fades over the reference's time constant (its smoothing factor
     /// `alpha`) while nothing confirms the estimate: a sensor that turns
     /// slower than `rest_gyro` cannot tell a field fixed to it from one
@@ -119,15 +169,22 @@ impl HardIron {
     /// turns the field about the vertical, which changes neither). A field
     /// fixed to the sensor stays put in that frame and is learned; one
     /// fixed to the earth turns in it as the sensor turns, and averages
-    /// out. A step that would take the estimate beyond `MAX_HARD_IRON`
-    /// times the reference's length is not taken (NaN and infinity fail
-    /// too, and a bound that overflows holds the estimate).
+    /// out, but only as far as the sensor's attitude varies. So a step
+    /// that would grow the estimate is taken only in the share `growth`
+    /// (the attitudes' variety, for a field the gate passed: see
+    /// `OrientationFilter::correct_heading`), while one that shrinks it is
+    /// taken whole: an estimate that the fields no longer bear out is
+    /// unlearned as fast as a kept-out field teaches one. A step that
+    /// would take the estimate beyond `MAX_HARD_IRON` times the
+    /// reference's length is not taken (NaN and infinity fail too, and a
+    /// bound that overflows holds the estimate).
     #[inline]
     pub(super) fn learn(
         &mut self,
         reading: &Reading,
         offset: Cvec3,
         weight: f32,
+        growth: f32,
         attitude: Quat,
         length: f32,
     ) {
@@ -142,9 +199,14 @@ impl HardIron {
             1.0 - 2.0 * (x * x + y * y),
         );
         // The disagreement of the reading itself: the corrected field's,
-        // plus the part of the estimate taken off.
+        // plus the part of the estimate not taken off.
         let step = reading.corrected * along + up * (offset.y - reading.field.z * along)
             - self.estimate * (1.0 - reading.taken);
+        let weight = if step.dot(self.estimate) < 0.0 {
+            weight
+        } else {
+            weight * growth
+        };
         let estimate = self.estimate + step * weight;
         let limit = MAX_HARD_IRON * length;
         let bound = limit * limit;

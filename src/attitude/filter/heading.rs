@@ -4,6 +4,7 @@
 
 use super::min_max::{max, min};
 use crate::attitude::low_pass::smoothing_factor;
+use crate::quat::Quat;
 use crate::vec::Cvec3;
 
 /// Time constant with which the magnetic reference follows the field, in
@@ -63,6 +64,13 @@ impl Heading {
             reference: [0.0; 2],
             shut: -1.0,
         }
+    }
+
+    /// `true` unless the gate has kept fields out for longer, net, than it
+    /// has passed them since.
+    #[inline]
+    pub(super) fn is_open(&self) -> bool {
+        self.shut <= 0.0
     }
 
     /// The reference field in the earth frame as (horizontal, vertical, 0).
@@ -144,6 +152,56 @@ impl Heading {
     }
 }
 
+/// The largest turn, in radians, that [`about_vertical`] builds from the
+/// series of its half angle's sine and cosine.
+const SMALL_TURN: f32 = 1.0 / 16.0;
+
+/// A turn about the vertical (+z): the rotation quaternion
+/// `(w, 0, 0, z)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct VerticalTurn {
+    w: f32,
+    z: f32,
+}
+
+impl VerticalTurn {
+    /// `self * q`, from the turn's two components: `w q + z (k q)`, where
+    /// `k q = (-q.z, -q.y, q.x, q.w)` (w, x, y, z); half the operations of
+    /// a general product.
+    #[inline]
+    pub(super) fn turn(self, q: Quat) -> Quat {
+        let Self { w, z } = self;
+        Quat::from_wxyz(
+            w * q.w - z * q.z,
+            w * q.x - z * q.y,
+            w * q.y + z * q.x,
+            w * q.z + z * q.w,
+        )
+    }
+}
+
+/// The rotation by `angle` radians about the vertical (+z), as
+/// [`Quat::from_rotation_z`] gives it. The heading correction's turns, but
+/// for the first fields, are small (the heading error times
+/// `1 - exp(-dt / tau_mag)`, a few thousandths of a radian): up to
+/// [`SMALL_TURN`], the half angle `h` (at most 1/32) gives its sine as
+/// `h (1 - h^2 / 6)` and its cosine as `1 - h^2 / 2`, whose first dropped
+/// terms, `h^5 / 120` and `h^4 / 24`, are below 2^-24 of them, without the
+/// kernel's argument reduction.
+#[inline]
+pub(super) fn about_vertical(angle: f32) -> VerticalTurn {
+    if angle.abs() > SMALL_TURN {
+        let q = Quat::from_rotation_z(angle);
+        return VerticalTurn { w: q.w, z: q.z };
+    }
+    let h = angle * 0.5;
+    let squared = h * h;
+    VerticalTurn {
+        w: 1.0 - 0.5 * squared,
+        z: h * (1.0 - squared * (1.0 / 6.0)),
+    }
+}
+
 /// The magnetometer reading `mag`, taken `delay` seconds ago (sensor
 /// frame), brought forward by the turn the gyro measures over the delay at
 /// the bias-free `rate`: a field fixed to the earth turns in the sensor
@@ -175,6 +233,31 @@ pub(super) fn undelayed(mag: Cvec3, rate: Cvec3, delay: f32) -> Cvec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The series agree with the kernel's rotation to within an ulp or two
+    /// up to the largest turn they build, beyond it the kernel builds the
+    /// rotation, and the turn of a quaternion is the Hamilton product.
+    #[test]
+    fn a_small_turn_about_the_vertical_is_the_kernels_rotation() {
+        let q = Quat::from_rotation_x(0.7) * Quat::from_rotation_y(-1.9);
+        for angle in [
+            0.0f32, 1e-30, -3.5e-4, 1e-3, -0.01, 0.0625, -0.0625, 0.07, -2.0, 3.1,
+        ] {
+            let turn = about_vertical(angle);
+            let kernel = Quat::from_rotation_z(angle);
+            let apart = (turn.w - kernel.w).abs().max((turn.z - kernel.z).abs());
+            assert!(apart <= 2.0 * f32::EPSILON, "{angle}: {turn:?} {kernel:?}");
+            let product = kernel * q;
+            let turned = turn.turn(q);
+            assert!(
+                turned.angle_to(product) < 1e-6,
+                "{angle}: {turned:?} {product:?}"
+            );
+        }
+        let beyond = about_vertical(0.07);
+        let kernel = Quat::from_rotation_z(0.07);
+        assert_eq!((beyond.w, beyond.z), (kernel.w, kernel.z));
+    }
 
     #[test]
     fn a_reading_is_brought_forward_by_at_most_a_quarter_radian() {

@@ -80,9 +80,9 @@ impl RestDetector {
             *self = Self::started_at(gyr, acc);
             return;
         }
-        let still = (gyr - gyro).norm() <= p.rest_gyro
-            && gyro.norm() <= p.max_bias
-            && (acc - acc_lp).norm() <= p.rest_acc * p.gravity;
+        let still = within(gyr - gyro, p.rest_gyro)
+            && within(gyro, p.max_bias)
+            && within(acc - acc_lp, p.rest_acc * p.gravity);
         *self = Self {
             gyro,
             acc: acc_lp,
@@ -109,6 +109,15 @@ impl RestDetector {
     }
 }
 
+/// `|v| <= bound`, compared through the squares (a norm needs a square
+/// root and a rescaling the comparison does not): false for a negative or
+/// NaN `bound` and a NaN `v`; a `bound` whose square overflows holds every
+/// `v`, as an infinite one does.
+#[inline]
+fn within(v: Cvec3, bound: f32) -> bool {
+    bound >= 0.0 && v.norm_squared() <= bound * bound
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -117,6 +126,16 @@ mod tests {
 
     fn gravity() -> Cvec3 {
         Cvec3::new(0.0, 0.0, FilterParams::DEFAULT.gravity)
+    }
+
+    #[test]
+    fn within_compares_the_length_with_the_bound() {
+        let v = Cvec3::new(3.0, 4.0, 0.0);
+        assert!(within(v, 5.0) && within(v, 5.5) && !within(v, 4.99));
+        assert!(within(Cvec3::ZERO, 0.0) && !within(Cvec3::ZERO, -1.0));
+        assert!(!within(v, f32::NAN) && !within(Cvec3::NAN, 10.0));
+        assert!(within(v, f32::INFINITY) && within(Cvec3::new(1e30, 0.0, 0.0), 1e20));
+        assert!(!within(Cvec3::new(1e30, 0.0, 0.0), 1e15));
     }
 
     #[test]

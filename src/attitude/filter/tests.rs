@@ -733,7 +733,9 @@ fn a_reading_weaker_than_the_gate_radius_fails_the_gate() {
 /// The hard-iron estimate learns while the sensor turns faster than
 /// `rest_gyro` (the gyro less the bias estimate), and not while it turns
 /// slower: a magnet of 3 µT carried by a sensor turning about the vertical
-/// at 0.8 and 1.5 times `rest_gyro`, with a bias of 0.02 rad/s known.
+/// at 0.8 and 1.5 times `rest_gyro`, with a bias of 0.02 rad/s known. (As
+/// slowly as the attitude varies, its fields passing the gate: 0.008 µT
+/// in 20 s of a turn of a radian.)
 #[test]
 fn the_hard_iron_estimate_learns_only_while_turning_faster_than_rest_gyro() {
     let level = Cvec3::new(0.0, 0.0, G);
@@ -749,8 +751,7 @@ fn the_hard_iron_estimate_learns_only_while_turning_faster_than_rest_gyro() {
             f.update_with_mag(Cvec3::new(0.0, 0.0, rate) + bias, level, mag, 0.01);
         }
         let learned = f.hard_iron.estimate.norm();
-        assert_eq!(learned > 0.5, learns, "{rate}: {learned}");
-        assert_eq!(learned == 0.0, !learns, "{rate}: {learned}");
+        assert_eq!(learned > 0.0, learns, "{rate}: {learned}");
     }
 }
 
@@ -1232,4 +1233,110 @@ fn a_gyro_scale_error_keeps_the_bias_variance_open_in_fast_turns() {
         "{}",
         worst_late.to_degrees()
     );
+}
+
+/// The heading error of a tumbling filter (300 s at 100 Hz) whose sensor
+/// carries a magnet of `share` of the earth's field along `direction`
+/// (sensor frame), from power-on (`attached` 0) or from `attached`
+/// seconds on: its RMS and its largest value from `settle` seconds after
+/// the magnet is there to the end, in radians.
+fn heading_with_a_weak_magnet(
+    share: f32,
+    direction: Cvec3,
+    attached: f32,
+    settle: f32,
+) -> (f32, f32) {
+    let magnet = direction.normalize() * (share * FIELD.norm());
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let mut truth = Quat::from_rotation_x(0.1);
+    let dt = 0.01;
+    let (mut sum, mut count, mut worst) = (0.0f32, 0u32, 0.0f32);
+    for i in 0..30_000 {
+        let t = i as f32 * dt;
+        let rate = tumble(t);
+        truth = truth.integrate(rate, dt);
+        let on = if t >= attached { magnet } else { Cvec3::ZERO };
+        let acc = truth.inv() * Cvec3::new(0.0, 0.0, G);
+        let q = f.update_with_mag(rate, acc, truth.inv() * FIELD + on, dt);
+        if t >= attached + settle {
+            let e = q * truth.inv();
+            let heading = 2.0 * float::atan2(e.z.abs(), e.w.abs());
+            sum += heading * heading;
+            count += 1;
+            worst = worst.max(heading);
+        }
+    }
+    ((sum / count as f32).sqrt(), worst)
+}
+
+/// A magnet of 3 to 15 % of the earth's field carried with the sensor
+/// (farther from it than trial 33's, whose is 60 %), from power-on or
+/// attached after it, in two directions: its fields pass the gate, or
+/// fail it only at some attitudes, and tilt the heading by up to its part
+/// across the horizontal field over that field unless the estimate is
+/// taken off. From 120 s after it is there, the heading holds within
+/// 1 degree RMS and 2.5 degrees at worst (0.66 and 1.57 measured; with the
+/// estimate taken off only beyond the gate's radius, 1.1 to 9.0 degrees
+/// RMS and 2.4 to 16.6 at worst).
+#[test]
+fn a_weak_magnet_carried_with_the_sensor_is_taken_off_the_heading() {
+    for direction in [Cvec3::new(0.6, -0.3, 0.74), Cvec3::new(0.1, 0.3, -1.0)] {
+        for share in [0.03, 0.06, 0.1, 0.15] {
+            for attached in [0.0, 30.0] {
+                let (rms, worst) = heading_with_a_weak_magnet(share, direction, attached, 120.0);
+                std::println!(
+                    "magnet {share} of the field along {direction:?}, from {attached} s: \
+                     heading {:.2} deg RMS, {:.2} at worst",
+                    rms.to_degrees(),
+                    worst.to_degrees()
+                );
+                let case = (share, direction, attached);
+                assert!(rms < 1f32.to_radians(), "{case:?}: {rms}");
+                assert!(worst < 2.5f32.to_radians(), "{case:?}: {worst}");
+            }
+        }
+    }
+}
+
+/// A field fixed to the earth that changes along the sensor's path (2.9 µT
+/// per metre, the sensor carried a metre either way every 12.6 s) while
+/// the sensor turns only a little (15 degrees either way about the
+/// vertical, 6 about a horizontal axis): readings that differ from the
+/// reference while the attitude barely varies tell no magnet on the
+/// sensor, and the estimate stays below 0.5 µT (0.21 measured; 1.7 when
+/// every passing field teaches it at the heading correction's pace, which,
+/// taken off, turns the heading by 4.5 degrees RMS instead of 1.3; the
+/// field's own turn along the path leaves 1.1 with no estimate taken
+/// off).
+#[test]
+fn a_field_that_changes_along_a_path_with_little_turning_is_no_magnet() {
+    let mut f = OrientationFilter::new(FilterParams::DEFAULT);
+    let dt = 0.01;
+    let gradient = Cvec3::new(2.0, -1.5, 1.5);
+    let (mut sum, mut count, mut largest) = (0.0f32, 0u32, 0.0f32);
+    for i in 0..30_000 {
+        let t = i as f32 * dt;
+        let (yaw, roll) = (0.25 * (2.5 * t).sin(), 0.1 * (1.3 * t).sin());
+        let tilt = Quat::from_rotation_x(roll);
+        let truth = Quat::from_rotation_z(yaw) * tilt;
+        let rate = Cvec3::new(0.13 * (1.3 * t).cos(), 0.0, 0.0)
+            + tilt.inv() * Cvec3::new(0.0, 0.0, 0.625 * (2.5 * t).cos());
+        let field = FIELD + gradient * (0.5 * t).sin();
+        let acc = truth.inv() * Cvec3::new(0.0, 0.0, G);
+        let q = f.update_with_mag(rate, acc, truth.inv() * field, dt);
+        if t > 60.0 {
+            let e = q * truth.inv();
+            let heading = 2.0 * float::atan2(e.z.abs(), e.w.abs());
+            sum += heading * heading;
+            count += 1;
+            largest = largest.max(f.hard_iron.estimate.norm());
+        }
+    }
+    let rms = (sum / count as f32).sqrt();
+    std::println!(
+        "field along a path: estimate at most {largest:.3} µT, heading {:.2} deg RMS",
+        rms.to_degrees()
+    );
+    assert!(largest < 0.5, "{largest}");
+    assert!(rms < 2f32.to_radians(), "{}", rms.to_degrees());
 }
