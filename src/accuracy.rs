@@ -375,7 +375,7 @@ pub const FILTER_BROAD_16_INCLINATION_RMSE_DEG: f32 = 0.6; // 0.516 6D and 9D
 /// magnetometer.
 ///
 /// Known: benchmark: measured on the recorded trial, rounded up.
-pub const FILTER_BROAD_16_TOTAL_RMSE_DEG: f32 = 0.8; // 0.726
+pub const FILTER_BROAD_16_TOTAL_RMSE_DEG: f32 = 0.8; // 0.727
 /// Angle error of `a.slerp(b, alpha)` for unit inputs, in the same form as
 /// [`POW_MAX_ANGLE_ERROR`]: at most `SLERP_MAX_ANGLE_ERROR * max(1, |alpha| theta)`
 /// with `theta = a.angle_to(b)` (at most pi). So for `alpha` in [0, 1] it is

@@ -136,7 +136,7 @@ use rest::RestDetector;
 ///
 /// Measured on real recordings with optical ground truth (BROAD trials 02,
 /// 07, 08, 12, 16, 27 and 33, the last with a magnet fixed 2 cm from the
-/// sensor: 9D total RMSE 1.383°, VQF's 3.752°): see the README's IMU
+/// sensor: 9D total RMSE 1.355°, VQF's 3.752°): see the README's IMU
 /// section, `docs/attitude.md` and the `broad` binary of `compare/`. On
 /// trial 16 (shipped in `testkit/data/`), 6D inclination RMSE below
 /// [`accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG`](crate::accuracy::FILTER_BROAD_16_INCLINATION_RMSE_DEG)

@@ -289,21 +289,47 @@ fn print_table(trials: &[Trial], mag_delay: f32) {
             println!("  ({nan} non-finite estimates in {})", t.name);
         }
     }
-    println!("\nAgainst VQF, measured in this run:");
-    let check = |ok: bool| if ok { "met" } else { "MISSED" };
+    println!("\nAgainst VQF, measured in this run (ours / VQF's):");
     for t in trials {
         let (six, nine) = (t.six.rmse, t.nine.rmse);
         let (vqf_six, vqf_nine) = (t.vqf_six.rmse, t.vqf_nine.rmse);
         println!(
-            "  {}: 6D inclination at or below VQF's: {} ({:.3} against {:.3}); 9D total at or below VQF's: {} ({:.3} against {:.3})",
+            "  {}: 6D inclination {:.3} against {:.3} ({:.2}); 9D total {:.3} against {:.3} ({:.2})",
             t.name,
-            check(six.inclination <= vqf_six.inclination),
             six.inclination,
             vqf_six.inclination,
-            check(nine.total <= vqf_nine.total),
+            six.inclination / vqf_six.inclination,
             nine.total,
             vqf_nine.total,
+            nine.total / vqf_nine.total,
         );
+    }
+    let check = |ok: bool| if ok { "met" } else { "MISSED" };
+    if trials.len() > 1 {
+        type Pair = fn(&Trial) -> (f64, f64);
+        let metrics: [(&str, Pair); 2] = [
+            ("6D inclination", |t| {
+                (t.six.rmse.inclination, t.vqf_six.rmse.inclination)
+            }),
+            ("9D total", |t| (t.nine.rmse.total, t.vqf_nine.rmse.total)),
+        ];
+        for (title, pair) in metrics {
+            let n = trials.len() as f64;
+            let ours = trials.iter().map(|t| pair(t).0).sum::<f64>() / n;
+            let vqf = trials.iter().map(|t| pair(t).1).sum::<f64>() / n;
+            let (worst, ratio) = trials.iter().map(|t| (t, pair(t).0 / pair(t).1)).fold(
+                (&trials[0], f64::NEG_INFINITY),
+                |a, b| if b.1 > a.1 { b } else { a },
+            );
+            println!(
+                "  {title}: mean of {} trials {ours:.3} against VQF's {vqf:.3}, at or below: {}; \
+                 worst ratio {ratio:.2} ({}), within 1.2: {}",
+                trials.len(),
+                check(ours <= vqf),
+                worst.name,
+                check(ratio <= 1.2),
+            );
+        }
     }
     let verdicts: Vec<_> = trials
         .iter()
@@ -423,6 +449,17 @@ fn print_peers(trials: &[Trial], mag_delay: f32) {
                 trials.len(),
                 means.join(" | ")
             );
+            // Each filter's largest ratio to VQF (PyPI) over the trials.
+            let worst: Vec<String> = (0..names.len())
+                .map(|k| {
+                    let ratio = trials
+                        .iter()
+                        .map(|t| metric(pick(t)[k]) / metric(pick(t)[1]))
+                        .fold(f64::NEG_INFINITY, f64::max);
+                    format!("{ratio:.2}")
+                })
+                .collect();
+            println!("| worst ratio to VQF (PyPI) | {} |", worst.join(" | "));
         }
     }
 }
