@@ -205,6 +205,35 @@ pub(super) fn horizontal_axes(q: Quat) -> [Cvec3; 2] {
 mod tests {
     use super::*;
 
+    /// The prediction's variance: while nothing measures the bias it
+    /// grows by `bias_drift^2` per second (a random walk), and in motion it
+    /// is at least `(0.1 % of the turn rate)^2`, never beyond `max_bias^2`.
+    #[test]
+    fn the_variance_grows_as_a_random_walk_and_stays_open_in_turns() {
+        let p = FilterParams::DEFAULT;
+        let mut bias = Bias::new(p.max_bias);
+        bias.variance = 0.0;
+        for _ in 0..1000 {
+            bias.predict(Cvec3::ZERO, false, 0.01, &p);
+        }
+        let walk = p.bias_drift * p.bias_drift * 10.0;
+        assert!(
+            (bias.variance - walk).abs() <= 1e-3 * walk,
+            "{}",
+            bias.variance
+        );
+        let turn = Cvec3::new(0.0, 6.0, 0.0);
+        bias.predict(turn, false, 0.01, &p);
+        let floor = (SCALE_ERROR * 6.0) * (SCALE_ERROR * 6.0);
+        assert!(
+            (bias.variance - floor).abs() <= 1e-6 * floor,
+            "{}",
+            bias.variance
+        );
+        bias.predict(Cvec3::new(1e3, 0.0, 0.0), false, 0.01, &p);
+        assert_eq!(bias.variance, p.max_bias * p.max_bias);
+    }
+
     #[test]
     fn horizontal_axes_are_the_first_two_rows_of_the_rotation_matrix() {
         for q in [

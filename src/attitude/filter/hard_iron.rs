@@ -223,3 +223,85 @@ fn horizontal_part(field: Cvec3) -> Option<f32> {
     let horizontal = Cvec3::new(field.x, field.y, 0.0).norm();
     (field.is_finite() && horizontal.is_finite() && horizontal > 0.0).then_some(horizontal)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The earth's field, level, facing north: (0, 16, -41) µT, whose
+    /// reference is (16, -41) and gate radius a tenth of its length.
+    const FIELD: Cvec3 = Cvec3::new(0.0, 16.0, -41.0);
+
+    fn reference() -> Cvec3 {
+        Cvec3::new(16.0, -41.0, 0.0)
+    }
+
+    fn radius() -> f32 {
+        0.1 * reference().norm()
+    }
+
+    #[test]
+    fn a_confirmed_or_strong_estimate_is_taken_off_whole_a_weak_unconfirmed_one_not() {
+        let small = HardIron {
+            estimate: Cvec3::new(0.0, 0.0, 0.5 * radius()),
+        };
+        let strong = HardIron {
+            estimate: Cvec3::new(0.0, 0.0, 1.2 * radius()),
+        };
+        assert_eq!(small.share(radius(), true), 1.0);
+        assert_eq!(small.share(radius(), false), 0.0);
+        assert_eq!(strong.share(radius(), false), 1.0);
+        assert_eq!(HardIron::new().share(radius(), false), 0.0);
+    }
+
+    /// An unconfirmed estimate between the gate's radius and twice it
+    /// turns the heading only through the field with its share beyond the
+    /// radius taken off, when that field passes the gate: here 1.5 times
+    /// the radius along the vertical, half of it taken off. A reading that
+    /// carries the whole estimate passes once half is off only if it lies
+    /// within the radius of the reference then; outside that range, or
+    /// with the gate open, the estimate is not in question.
+    #[test]
+    fn an_unconfirmed_estimate_turns_the_heading_by_its_share_beyond_the_radius() {
+        let r = radius();
+        let h = HardIron {
+            estimate: Cvec3::new(0.0, 0.0, 1.5 * r),
+        };
+        let attitude = Quat::IDENTITY;
+        // A magnet of 1.5 r read with the field: half of it left, 0.75 r
+        // off the reference, within the radius.
+        let read = FIELD + h.estimate;
+        let partial = h.unconfirmed(read, attitude, reference(), r, false);
+        let want = FIELD + h.estimate * 0.5;
+        let field = partial.flatten().expect("passes with half off");
+        assert!((field - want).norm() < 1e-4, "{field:?} {want:?}");
+        // A reading 2.5 r off along the vertical fails once half is off.
+        let far = FIELD + Cvec3::new(0.0, 0.0, 2.5 * r);
+        assert_eq!(
+            h.unconfirmed(far, attitude, reference(), r, false),
+            Some(None)
+        );
+        // The gate open, or an estimate outside (r, 2r): not in question.
+        assert_eq!(h.unconfirmed(read, attitude, reference(), r, true), None);
+        for size in [0.9, 2.1] {
+            let other = HardIron {
+                estimate: Cvec3::new(0.0, 0.0, size * r),
+            };
+            assert_eq!(
+                other.unconfirmed(read, attitude, reference(), r, false),
+                None,
+                "{size}"
+            );
+        }
+    }
+
+    /// A reading further from the reference than `MAX_HARD_IRON + 1` of
+    /// its lengths (its pull below a third) is no field an estimate could
+    /// explain; one within it is.
+    #[test]
+    fn only_a_reading_an_estimate_could_explain_teaches_it() {
+        let h = HardIron::new();
+        assert!(h.could_explain(1.0) && h.could_explain(0.34));
+        assert!(!h.could_explain(0.32) && !h.could_explain(0.0));
+    }
+}
