@@ -70,7 +70,7 @@ use rest::RestDetector;
 /// Executed instructions per update on the emulated Cortex-M4F (QEMU
 /// mps2-an386, opt-level "s", LTO), counted by `cargo xtask filter-cost`,
 /// which fails above the budget of 1,600 (6D) and 2,200 (9D) instructions
-/// and 256 bytes of state: 1,479 (6D) and 2,137 (9D; 2,162 with
+/// and 256 bytes of state: 1,479 (6D) and 2,136 (9D; 2,161 with
 /// `mag_delay` set).
 ///
 /// # Bad input
