@@ -186,25 +186,17 @@ fn main() -> ! {
     black_box(black_box(&mut six).update(black_box(gyr), black_box(acc), black_box(0.0035)));
     measure::end();
 
-    empty();
-    measure::start();
-    black_box(black_box(&mut nine).update_with_mag(
-        black_box(gyr),
-        black_box(acc),
-        black_box(mag),
-        black_box(0.0035),
-    ));
-    measure::end();
-
-    empty();
-    measure::start();
-    black_box(black_box(&mut late).update_with_mag(
-        black_box(gyr),
-        black_box(acc),
-        black_box(mag),
-        black_box(0.0035),
-    ));
-    measure::end();
+    for filter in [&mut nine, &mut late] {
+        empty();
+        measure::start();
+        black_box(black_box(filter).update_with_mag(
+            black_box(gyr),
+            black_box(acc),
+            black_box(mag),
+            black_box(0.0035),
+        ));
+        measure::end();
+    }
 
     empty();
     measure::start();

@@ -124,6 +124,22 @@ pub struct Trial {
     pub uf: [uf_ahrs::Runs; 3],
 }
 
+impl Trial {
+    /// One run of each filter (`which` of its 6D and its 9D run), in the
+    /// order of the tables' columns: ours, VQF, uf-ahrs's three, Fusion.
+    fn runs<'t>(&'t self, which: fn(&'t Run, &'t Run) -> &'t Run) -> [&'t Run; 6] {
+        let [a, b, c] = &self.uf;
+        [
+            which(&self.six, &self.nine),
+            which(&self.vqf_six, &self.vqf_nine),
+            which(&a.six, &a.nine),
+            which(&b.six, &b.nine),
+            which(&c.six, &c.nine),
+            which(&self.fusion_six, &self.fusion_nine),
+        ]
+    }
+}
+
 fn main() -> ExitCode {
     let args = Args::parse();
     match evaluate(&args) {
@@ -401,26 +417,8 @@ fn print_peers(trials: &[Trial], mag_delay: f32) {
         .chain([pypi::FUSION.name])
         .collect();
     type Pick = fn(&Trial) -> [&Run; 6];
-    let six: Pick = |t| {
-        [
-            &t.six,
-            &t.vqf_six,
-            &t.uf[0].six,
-            &t.uf[1].six,
-            &t.uf[2].six,
-            &t.fusion_six,
-        ]
-    };
-    let nine: Pick = |t| {
-        [
-            &t.nine,
-            &t.vqf_nine,
-            &t.uf[0].nine,
-            &t.uf[1].nine,
-            &t.uf[2].nine,
-            &t.fusion_nine,
-        ]
-    };
+    let six: Pick = |t| t.runs(|six, _| six);
+    let nine: Pick = |t| t.runs(|_, nine| nine);
     type Metric = fn(&Run) -> f64;
     let tables: [(&str, Pick, Metric); 2] = [
         ("6D inclination", six, |r| r.rmse.inclination),
