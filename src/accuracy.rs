@@ -57,7 +57,7 @@
 //! | [`FROM_MATRIX_MAX_ANGLE_ERROR`] | 4.3e-7 |
 //! | [`ROTATION_ARC_MAX_ERROR`] | 4.6e-7 |
 //! | [`LOOK_AT_MAX_ANGLE_ERROR`] | 1.1e-6 |
-//! | [`DETERMINANT_MAX_REL_ERROR`] | 5.3e-7 |
+//! | [`DETERMINANT_MAX_REL_ERROR`] | 4.8e-7 |
 //! | [`CATMULL_ROM_MAX_ANGLE_ERROR`] | 4.8e-7 |
 //! | [`SAMPLER_LINEAR_MAX_ANGLE_ERROR`] | 5.6e-7 |
 //! | [`SAMPLER_CUBIC_MAX_ANGLE_ERROR`] | 1.0e-6 |
@@ -65,7 +65,7 @@
 //! | [`ANGLE_BETWEEN_MAX_ERROR`] | 4.2e-7 |
 //! | [`PROJECT_MAX_REL_ERROR`] | 4.5e-7 |
 //! | [`MATRIX3_INVERSE_MAX_REL_ERROR`] | 2.5e-7 |
-//! | [`MATRIX3_DETERMINANT_MAX_REL_ERROR`] | 2.5e-7 |
+//! | [`MATRIX3_DETERMINANT_MAX_REL_ERROR`] | 3.0e-7 |
 //! | [`LOOK_AT_RH_MAX_TRANSLATION_ERROR`] | 1.1e-6 |
 //! | [`SRT_ROTATION_MAX_ANGLE_ERROR`] | 9.0e-7 |
 //! | [`SRT_SCALE_MAX_REL_ERROR`] | 9.5e-7 |
@@ -284,13 +284,23 @@ pub const ROTATION_ARC_MAX_ERROR: f32 = 4.6e-7; // 3.666e-7 (|q a - b|), 3.419e-
 ///
 /// Known: measured: the largest error over the draws in its doc, rounded up.
 pub const LOOK_AT_MAX_ANGLE_ERROR: f32 = 1.1e-6; // 8.830e-7
-/// Error of [`Matrix4::determinant`](crate::Matrix4::determinant) relative
-/// to the determinant's size and divided by the condition number
-/// (Frobenius), for random matrices with entries in [-1, 1] and condition
-/// numbers up to 1e4, against nalgebra's f64 determinant.
+/// Error of [`Matrix4::determinant`](crate::Matrix4::determinant)
+/// relative to the sum `T` of the magnitudes of the 24 products of four
+/// entries of the determinant's expansion: `|det - exact| <= DETERMINANT_MAX_REL_ERROR
+/// T`, for every matrix where nothing overflows, and besides at most
+/// `112 2^-150 (1 + M^2)` (`M` the largest entry) where products round
+/// near underflow. `T` is `|det|` where the terms do not cancel; the
+/// relative error of the determinant itself is at most this times
+/// `T / |det|`, large for a nearly singular matrix.
 ///
-/// Known: measured: the largest error over the draws in its doc, rounded up.
-pub const DETERMINANT_MAX_REL_ERROR: f32 = 5.3e-7; // 4.176e-7
+/// Known: proven: `proofs/coq/matrix4_determinant_bound.v` proves
+/// (1 + 2^-24)^8 - 1 (4.7684e-7): each product passes through eight
+/// roundings, each relative to what it rounds (Coq, on the rounded terms
+/// of `proofs/gappa/matrix4_determinant.g`, which computes the code's
+/// bits). A search (`deep_determinant_search` in
+/// `proofs/tests/worst_cases.rs`) finds 2.7633e-7: the bound is 1.73
+/// times that.
+pub const DETERMINANT_MAX_REL_ERROR: f32 = 4.8e-7; // 2.7633e-7 (search), 4.7684e-7 proven
 /// Angle error of the Hamilton product `a * b` of unit quaternions: every
 /// component in [-1, 1] and `|a|^2`, `|b|^2` within 2^-20 of 1 (f32
 /// roundings of unit quaternions, and every result of `normalize`).
@@ -469,12 +479,21 @@ pub const SRT_SCALE_MAX_REL_ERROR: f32 = 9.5e-7; // 7.610e-7
 ///
 /// Known: measured: the largest error over the draws in its doc, rounded up.
 pub const MATRIX3_INVERSE_MAX_REL_ERROR: f32 = 2.5e-7; // 1.984e-7
-/// Error of [`Matrix3::determinant`](crate::Matrix3::determinant) relative
-/// to the determinant and divided by the condition number, on the same
-/// draws, against nalgebra's f64 determinant.
+/// Error of [`Matrix3::determinant`](crate::Matrix3::determinant)
+/// relative to the sum `T` of the magnitudes of the six products of its
+/// expansion (`|a_x b_y c_z|` and the five others): `|det - exact| <=
+/// MATRIX3_DETERMINANT_MAX_REL_ERROR T`, for every matrix where nothing
+/// overflows, and besides at most `8 2^-150 (1 + |a|_1)` (`a` the first
+/// column) where products round near underflow.
 ///
-/// Known: measured: the largest error over the draws in its doc, rounded up.
-pub const MATRIX3_DETERMINANT_MAX_REL_ERROR: f32 = 2.5e-7; // 2.002e-7
+/// Known: proven: `proofs/coq/matrix3_determinant_bound.v` proves
+/// (1 + 2^-24)^5 - 1 (2.9803e-7): each product passes through five
+/// roundings, each relative to what it rounds (Coq, on the rounded terms
+/// of `proofs/gappa/matrix3_determinant.g`, which computes the code's
+/// bits). A search (`deep_determinant_search` in
+/// `proofs/tests/worst_cases.rs`) finds 2.4171e-7: the bound is 1.23
+/// times that.
+pub const MATRIX3_DETERMINANT_MAX_REL_ERROR: f32 = 3.0e-7; // 2.4171e-7 (search), 2.9803e-7 proven
 /// Largest entry difference between `Matrix4::from_quat(q)`, for unit `q`,
 /// and the exact rotation matrix of `q / |q|`: "unit" is an f32 rounding
 /// of a unit quaternion, every component in [-1, 1] and `|q|^2` within

@@ -233,15 +233,33 @@ fn normalize_is_within_its_bound_from_subnormal_to_huge() {
     ulps.check(2.0); // the 2 ulp that Quat::norm and Cvec3::norm document
 }
 
+/// The sum of the magnitudes of the 24 products of the determinant's
+/// expansion of a 4x4 matrix (column-major), one entry of each row and
+/// column: what `DETERMINANT_MAX_REL_ERROR` is relative to.
+fn expansion_terms(m: &[f32; 16]) -> f64 {
+    let mut total = 0.0;
+    for r0 in 0..4 {
+        for r1 in (0..4).filter(|r| *r != r0) {
+            for r2 in (0..4).filter(|r| *r != r0 && *r != r1) {
+                let r3 = 6 - r0 - r1 - r2;
+                let entries = [m[r0], m[4 + r1], m[8 + r2], m[12 + r3]];
+                total += entries.iter().map(|e| f64::from(*e).abs()).product::<f64>();
+            }
+        }
+    }
+    total
+}
+
 #[test]
 fn inverse_of_general_matrices_is_within_its_bound() {
     // Random 4x4 matrices with every entry in [-1, 1] (projective ones, not
     // only affine), against nalgebra's f64 inverse. The error is relative to
     // the inverse's size and divided by the condition number (Frobenius), as
-    // for any inverse computed in f32.
+    // for any inverse computed in f32; the determinant's is relative to the
+    // sum of its expansion's magnitudes.
     let mut draws = Draws::new(7);
     let mut worst = Worst::new("Matrix4::inverse: rel. error / condition");
-    let mut det = Worst::new("Matrix4::determinant: rel. error / condition");
+    let mut det = Worst::new("Matrix4::determinant: error / sum of the expansion's terms");
     let mut tested = 0;
     for _ in 0..draw_count() / 4 {
         let m: [f32; 16] = core::array::from_fn(|_| draws.uniform(-1.0, 1.0) as f32);
@@ -253,11 +271,11 @@ fn inverse_of_general_matrices_is_within_its_bound() {
         if cond > 1e4 {
             continue;
         }
-        let det64 = m64.determinant();
         let got_det = Matrix4::from_cols_array(&m).determinant() as f64;
-        det.see((got_det - det64).abs() / det64.abs() / cond, || {
-            format!("{m:?}")
-        });
+        det.see(
+            (got_det - m64.determinant()).abs() / expansion_terms(&m),
+            || format!("{m:?}"),
+        );
         let got = Matrix4::from_cols_array(&m)
             .inverse()
             .expect("a well-conditioned matrix has an inverse");

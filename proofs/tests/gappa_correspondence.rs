@@ -1021,3 +1021,238 @@ fn evaluator_reads_the_notations_and_rounds_each_operation() {
     );
     assert_eq!(m.run(&[1.0, 2f64.powi(-30)])["s"], 2f64.powi(-30));
 }
+
+/// A rounded expression as text, each operation in parentheses and each
+/// rounding `r(...)`: how a model's definition and a law's Coq term are
+/// compared.
+fn rounded_text(e: &Expr, every_op: bool) -> String {
+    let round = |s: String| if every_op { format!("r{s}") } else { s };
+    match e {
+        Expr::Num(v) => format!("{v:e}"),
+        Expr::Var(v) => v.clone(),
+        Expr::Neg(a) => format!("(-{})", rounded_text(a, every_op)),
+        Expr::Sqrt(a) => round(format!("(sqrt {})", rounded_text(a, every_op))),
+        Expr::Bin(op, a, b) => round(format!(
+            "({} {op} {})",
+            rounded_text(a, every_op),
+            rounded_text(b, every_op)
+        )),
+    }
+}
+
+/// Reads a Coq term of the laws (`rnd (rnd (a * b) - c)`: `rnd` applied
+/// to a group or a name, other functions applied to a group, `+ - * /`,
+/// names, numbers) into the text of [`rounded_text`].
+struct CoqTerm {
+    t: Vec<String>,
+    i: usize,
+}
+
+impl CoqTerm {
+    fn peek(&self) -> Option<&str> {
+        self.t.get(self.i).map(String::as_str)
+    }
+    fn expr(&mut self) -> String {
+        let mut e = self.term();
+        while let Some(op @ ("+" | "-")) = self.peek() {
+            let op = op.to_owned();
+            self.i += 1;
+            e = format!("({e} {op} {})", self.term());
+        }
+        e
+    }
+    fn term(&mut self) -> String {
+        let mut e = self.unary();
+        while let Some(op @ ("*" | "/")) = self.peek() {
+            let op = op.to_owned();
+            self.i += 1;
+            e = format!("({e} {op} {})", self.unary());
+        }
+        e
+    }
+    fn unary(&mut self) -> String {
+        match self.peek() {
+            Some("-") => {
+                self.i += 1;
+                format!("(-{})", self.unary())
+            }
+            Some("rnd") => {
+                self.i += 1;
+                let inner = self.primary();
+                if inner.starts_with('(') {
+                    format!("r{inner}")
+                } else {
+                    format!("r({inner})")
+                }
+            }
+            Some(f)
+                if f.starts_with(|c: char| c.is_ascii_alphabetic())
+                    && self.t.get(self.i + 1).is_some_and(|n| n == "(") =>
+            {
+                let f = f.to_owned();
+                self.i += 1;
+                format!("({f} {})", self.primary())
+            }
+            _ => self.primary(),
+        }
+    }
+    fn primary(&mut self) -> String {
+        let t = self.t.get(self.i).cloned().unwrap_or_default();
+        self.i += 1;
+        if t == "(" {
+            let e = self.expr();
+            assert_eq!(self.peek(), Some(")"), "a law's term: {:?}", self.t);
+            self.i += 1;
+            return e;
+        }
+        if t.starts_with(|c: char| c.is_ascii_digit()) {
+            return format!("{:e}", number(&t));
+        }
+        t
+    }
+}
+
+/// The `let NAME := TERM in` definitions of a law's theorem, each term in
+/// the text of [`rounded_text`].
+fn law_terms(law: &str) -> Vec<(String, String)> {
+    let body: String = law
+        .split("(*")
+        .enumerate()
+        .map(|(i, part)| {
+            if i == 0 {
+                part
+            } else {
+                part.split_once("*)").map_or("", |(_, rest)| rest)
+            }
+        })
+        .collect();
+    let t = tokens(&body);
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i + 3 < t.len() {
+        if t[i] == "let" && t[i + 2] == ":" && t[i + 3] == "=" {
+            let name = t[i + 1].clone();
+            let mut j = i + 4;
+            let mut depth = 0i32;
+            while j < t.len() && !(depth == 0 && t[j] == "in") {
+                depth += match t[j].as_str() {
+                    "(" => 1,
+                    ")" => -1,
+                    _ => 0,
+                };
+                j += 1;
+            }
+            let mut p = CoqTerm {
+                t: t[i + 4..j].to_vec(),
+                i: 0,
+            };
+            let e = p.expr();
+            assert_eq!(p.i, p.t.len(), "the law's term {name}: {:?}", p.t);
+            out.push((name, e));
+            i = j;
+        } else {
+            i += 1;
+        }
+    }
+    out
+}
+
+/// The law `proofs/coq/LAW.v` states its theorem on the model's rounded
+/// computation: every term it defines under the name of one of the
+/// model's rounded definitions is that definition, rounding for rounding
+/// and in the same order of operations, and it defines the model's result
+/// (its last definition). So the law is about the code's arithmetic, as
+/// the model is.
+fn law_terms_are_the_models(law: &str, m: &Model) {
+    let path = format!("{}/coq/{law}.v", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let terms = law_terms(&text);
+    let mut matched = 0;
+    for (name, term) in &terms {
+        let Some(def) = m.defs.iter().find(|d| &d.name == name) else {
+            continue;
+        };
+        let expected = if def.every_op {
+            rounded_text(&def.expr, true)
+        } else {
+            let inner = rounded_text(&def.expr, false);
+            if inner.starts_with('(') {
+                format!("r{inner}")
+            } else {
+                format!("r({inner})")
+            }
+        };
+        assert_eq!(
+            term, &expected,
+            "{law}.v: {name} is not {}.g's {name}",
+            m.name
+        );
+        matched += 1;
+    }
+    let last = m.defs.last().map(|d| d.name.as_str());
+    assert!(
+        terms.iter().any(|(n, _)| Some(n.as_str()) == last),
+        "{law}.v does not define {}.g's result {last:?}",
+        m.name
+    );
+    assert!(matched > 0, "{law}.v shares no term with {}.g", m.name);
+}
+
+#[test]
+fn law_terms_are_read_as_the_models_rounded_definitions() {
+    let m = parse(
+        "t",
+        "@rnd = float<ieee_32, ne>;\na = rnd(A); b = rnd(B); c = rnd(C);\nx rnd= a * b - c;\ny = rnd(a / x);\n{ a in [0, 1] -> y in ? }",
+    );
+    let law = "(* let x := rnd (a * b) in *)\nTheorem t : forall a b c : R,\n  let x := rnd (rnd (a * b) - c) in\n  let y := rnd (a / x) in y <= 1.";
+    let terms = law_terms(law);
+    assert_eq!(terms.len(), 2);
+    assert_eq!(terms[0].1, rounded_text(&m.defs[0].expr, true));
+    assert_eq!(terms[0].1, "r(r(a * b) - c)");
+    assert_eq!(terms[1].1, "r(a / x)");
+    // Another order of operations is another term.
+    let regrouped = law_terms("let x := rnd (a * rnd (b - c)) in x");
+    assert_ne!(regrouped[0].1, terms[0].1);
+}
+
+#[test]
+fn determinant_of_matrix3_is_matrix3_determinant_g() {
+    let Some(m) = model("matrix3_determinant", Code::F32) else {
+        return;
+    };
+    assert_eq!(
+        m.inputs,
+        ["a0", "a1", "a2", "b0", "b1", "b2", "c0", "c1", "c2"]
+    );
+    law_terms_are_the_models("matrix3_determinant_bound", &m);
+    for (_, mut d) in draws() {
+        let v: [f32; 9] = core::array::from_fn(|_| component(&mut d));
+        let det = rigtform::Matrix3::from_cols_array(&v).determinant();
+        check(&m, &m.run(&v.map(f64::from)), "d", det, &v);
+    }
+}
+
+#[test]
+fn determinant_of_matrix4_is_matrix4_determinant_g() {
+    let Some(m) = model("matrix4_determinant", Code::F32) else {
+        return;
+    };
+    let names = [
+        "a0", "a1", "a2", "b0", "b1", "b2", "c0", "c1", "c2", "d0", "d1", "d2", "x", "y", "z", "w",
+    ];
+    assert_eq!(m.inputs, names);
+    law_terms_are_the_models("matrix4_determinant_bound", &m);
+    for (_, mut d) in draws() {
+        let v: [f32; 16] = core::array::from_fn(|_| component(&mut d));
+        // Columns (a0, a1, a2, x), (b0, b1, b2, y), (c0, c1, c2, z), (d0, d1, d2, w).
+        let cols: [f32; 16] = core::array::from_fn(|i| {
+            if i % 4 == 3 {
+                v[12 + i / 4]
+            } else {
+                v[3 * (i / 4) + i % 4]
+            }
+        });
+        let det = rigtform::Matrix4::from_cols_array(&cols).determinant();
+        check(&m, &m.run(&v.map(f64::from)), "det", det, &v);
+    }
+}

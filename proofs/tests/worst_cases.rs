@@ -371,3 +371,121 @@ fn deep_product_angle_search() {
         MUL_MAX_ANGLE_ERROR,
     );
 }
+
+/// The Leibniz expansion of the determinant of the `n` x `n` matrix `m`
+/// (column-major) in f64: the determinant and the sum of its products'
+/// magnitudes, the `T` that `DETERMINANT_MAX_REL_ERROR` and
+/// `MATRIX3_DETERMINANT_MAX_REL_ERROR` are relative to. A product of
+/// three or four f32 rounds in f64 by 2^-53 of itself, far below the
+/// errors sought.
+fn leibniz(m: &[f32], n: usize) -> (f64, f64) {
+    let mut perm: Vec<usize> = (0..n).collect();
+    let (mut det, mut total) = (0f64, 0f64);
+    // Heap's algorithm: every permutation once, the sign flipping at each swap.
+    let mut c = vec![0usize; n];
+    let mut sign = 1.0;
+    let mut visit = |perm: &[usize], sign: f64| {
+        let p: f64 = (0..n)
+            .map(|col| f64::from(m[col * n + perm[col]]))
+            .product();
+        det += sign * p;
+        total += p.abs();
+    };
+    visit(&perm, sign);
+    let mut i = 0;
+    while i < n {
+        if c[i] < i {
+            if i % 2 == 0 {
+                perm.swap(0, i);
+            } else {
+                perm.swap(c[i], i);
+            }
+            sign = -sign;
+            visit(&perm, sign);
+            c[i] += 1;
+            i = 0;
+        } else {
+            c[i] = 0;
+            i += 1;
+        }
+    }
+    (det, total)
+}
+
+/// `|det - exact| / T` for a matrix's f32 determinant (0 where `T` is 0
+/// or the determinant is not finite).
+fn determinant_error<const N: usize>(v: [f32; N]) -> f64 {
+    let (got, n) = match N {
+        9 => {
+            let m: [f32; 9] = core::array::from_fn(|i| v[i]);
+            (rigtform::Matrix3::from_cols_array(&m).determinant(), 3)
+        }
+        _ => {
+            let m: [f32; 16] = core::array::from_fn(|i| v[i]);
+            (rigtform::Matrix4::from_cols_array(&m).determinant(), 4)
+        }
+    };
+    let (exact, total) = leibniz(&v, n);
+    if total == 0.0 || !got.is_finite() {
+        return 0.0;
+    }
+    (f64::from(got) - exact).abs() / total
+}
+
+/// The largest of `climbs` climbs of `determinant_error` from matrices
+/// with entries in [-1, 1], half of them nearly singular (the last column
+/// a combination of the others, where the terms cancel).
+fn determinant_search<const N: usize>(climbs: usize, seed: u64) -> f64 {
+    let n = if N == 9 { 3 } else { 4 };
+    let mut d = Draws::new(seed);
+    let mut worst = 0f64;
+    for k in 0..climbs {
+        let mut start: [f32; N] = core::array::from_fn(|_| d.uniform(-1.0, 1.0));
+        if k % 2 == 0 {
+            let (p, q) = (d.uniform(-1.0, 1.0), d.uniform(-1.0, 1.0));
+            for r in 0..n {
+                start[(n - 1) * n + r] = p * start[r] + q * start[n + r];
+            }
+        }
+        worst = worst.max(climb(&mut d, start, 400, &determinant_error).1);
+    }
+    worst
+}
+
+#[test]
+fn determinants_found_stay_within_their_constants() {
+    use rigtform::accuracy::{DETERMINANT_MAX_REL_ERROR, MATRIX3_DETERMINANT_MAX_REL_ERROR};
+    // The expansion's magnitudes and sign, on a matrix whose terms are known.
+    let (det, total) = leibniz(&[2.0, 1.0, 0.0, 1.0, 3.0, 0.0, 0.0, 0.0, 4.0], 3);
+    assert_eq!((det, total), (20.0, 28.0));
+    within(
+        "Matrix3::determinant, relative to the terms",
+        determinant_search::<9>(300, 11),
+        "MATRIX3_DETERMINANT_MAX_REL_ERROR",
+        MATRIX3_DETERMINANT_MAX_REL_ERROR,
+    );
+    within(
+        "Matrix4::determinant, relative to the terms",
+        determinant_search::<16>(300, 12),
+        "DETERMINANT_MAX_REL_ERROR",
+        DETERMINANT_MAX_REL_ERROR,
+    );
+}
+
+#[test]
+#[ignore = "a minute in release: the search the constants' docs quote"]
+fn deep_determinant_search() {
+    use rigtform::accuracy::{DETERMINANT_MAX_REL_ERROR, MATRIX3_DETERMINANT_MAX_REL_ERROR};
+    within(
+        "Matrix3::determinant, relative to the terms",
+        determinant_search::<9>(100_000, 11),
+        "MATRIX3_DETERMINANT_MAX_REL_ERROR",
+        MATRIX3_DETERMINANT_MAX_REL_ERROR,
+    );
+    within(
+        "Matrix4::determinant, relative to the terms",
+        determinant_search::<16>(50_000, 12),
+        "DETERMINANT_MAX_REL_ERROR",
+        DETERMINANT_MAX_REL_ERROR,
+    );
+}

@@ -140,9 +140,11 @@ impl Matrix3 {
     ///
     /// # Accuracy
     ///
-    /// Relative error at most
+    /// Within
     /// [`accuracy::MATRIX3_DETERMINANT_MAX_REL_ERROR`](crate::accuracy::MATRIX3_DETERMINANT_MAX_REL_ERROR)
-    /// times the condition number `|M| |M^-1|` (Frobenius).
+    /// times the sum of the magnitudes of the six products of the
+    /// expansion (proven): relative to the determinant, that times how
+    /// much the products cancel.
     ///
     /// ```
     /// use rigtform::{Cvec3, Matrix3};

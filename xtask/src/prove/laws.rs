@@ -41,8 +41,10 @@ const AXIOMS: [&str; 4] = [
     "Classical_Prop.classic",
 ];
 
-/// The library of the laws, compiled first: what they share.
-const LIBRARY: &str = "Common";
+/// The library of the laws, compiled first and in this order: what they
+/// share (`Common`: the rounding and its error; `Tracked`: an error
+/// carried through a straight-line computation).
+const LIBRARY: [&str; 2] = ["Common", "Tracked"];
 
 /// The law files of `dir` (`*.v` but the library), in order of name.
 pub fn law_files(dir: &Path) -> Result<Vec<PathBuf>> {
@@ -50,7 +52,11 @@ pub fn law_files(dir: &Path) -> Result<Vec<PathBuf>> {
         .with_context(|| format!("{}", dir.display()))?
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| p.extension().is_some_and(|e| e == "v"))
-        .filter(|p| p.file_stem().is_some_and(|s| s != LIBRARY))
+        .filter(|p| {
+            p.file_stem()
+                .and_then(|s| s.to_str())
+                .is_some_and(|s| !LIBRARY.contains(&s))
+        })
         .collect();
     files.sort();
     Ok(files)
@@ -175,10 +181,12 @@ fn check_axioms(work: &Path, stem: &str, theorem: &str) -> Result<()> {
 /// certificates of this run are compiled (`models` names them), checks
 /// each law's claims, and returns them as proven.
 pub fn prove_laws(dir: &Path, work: &Path, models: &[String]) -> Result<Vec<Proven>> {
-    let library = dir.join(format!("{LIBRARY}.v"));
-    std::fs::copy(&library, work.join(format!("{LIBRARY}.v")))
-        .with_context(|| format!("{}", library.display()))?;
-    coqc(work, &work.join(format!("{LIBRARY}.v")))?;
+    for name in LIBRARY {
+        let library = dir.join(format!("{name}.v"));
+        std::fs::copy(&library, work.join(format!("{name}.v")))
+            .with_context(|| format!("{}", library.display()))?;
+        coqc(work, &work.join(format!("{name}.v")))?;
+    }
     let mut proven = Vec::new();
     for path in law_files(dir)? {
         let start = Instant::now();
@@ -205,7 +213,9 @@ pub fn prove_laws(dir: &Path, work: &Path, models: &[String]) -> Result<Vec<Prov
         }
         let needs = required(&text);
         for need in &needs {
-            if need != LIBRARY && !models.contains(need) && !dir.join(format!("{need}.v")).exists()
+            if !LIBRARY.contains(&need.as_str())
+                && !models.contains(need)
+                && !dir.join(format!("{need}.v")).exists()
             {
                 bail!("{stem}.v requires {PREFIX}.{need}, which is neither a model of this run nor a law");
             }
@@ -224,14 +234,18 @@ pub fn prove_laws(dir: &Path, work: &Path, models: &[String]) -> Result<Vec<Prov
             check_axioms(work, &stem, &claim.quantity)?;
         }
         let time = start.elapsed();
+        let certificates: Vec<_> = needs
+            .iter()
+            .filter(|n| !LIBRARY.contains(&n.as_str()))
+            .map(|n| format!("{n}.g"))
+            .collect();
         crate::tools::say(format!(
-            "{stem}.v: checked by coqc on the certificates of {} ({:.1} s)",
-            needs
-                .iter()
-                .filter(|n| *n != LIBRARY)
-                .map(|n| format!("{n}.g"))
-                .collect::<Vec<_>>()
-                .join(", "),
+            "{stem}.v: checked by coqc{} ({:.1} s)",
+            if certificates.is_empty() {
+                String::new()
+            } else {
+                format!(" on the certificates of {}", certificates.join(", "))
+            },
             time.as_secs_f64()
         ));
         proven.push(Proven {
