@@ -17,6 +17,19 @@ Require Import Laws.Common Laws.Tracked.
 
 Open Scope R_scope.
 
+(* The magnitude of a 2x2 minor's two products, for entries at most M. *)
+Lemma pair_magnitude : forall M p0 p1 p2 p3,
+  Rabs p0 <= M -> Rabs p1 <= M -> Rabs p2 <= M -> Rabs p3 <= M ->
+  0 <= Rabs p0 * Rabs p1 + Rabs p2 * Rabs p3 <= 2 * (M * M).
+Proof.
+  intros M p0 p1 p2 p3 H0 H1 H2 H3.
+  pose proof (Rabs_pos p0); pose proof (Rabs_pos p1);
+  pose proof (Rabs_pos p2); pose proof (Rabs_pos p3).
+  assert (Rabs p0 * Rabs p1 <= M * M) by (apply Rmult_le_compat; lra).
+  assert (Rabs p2 * Rabs p3 <= M * M) by (apply Rmult_le_compat; lra).
+  split; [apply Rplus_le_le_0_compat; apply Rmult_le_pos|]; lra.
+Qed.
+
 (* One product of two 2x2 minors, each the rounded difference of two
    rounded products, for entries at most M in magnitude. *)
 Lemma minor_product : forall M p0 p1 p2 p3 q0 q1 q2 q3,
@@ -40,18 +53,9 @@ Proof.
   pose proof (near_mul _ _ _ _ _ _ _ _ _ Hk1 He1 He1 Np Nq) as N.
   set (A := Rabs p0 * Rabs p1 + Rabs p2 * Rabs p3) in *.
   set (B := Rabs q0 * Rabs q1 + Rabs q2 * Rabs q3) in *.
-  assert (HA : 0 <= A <= 2 * (M * M)).
-  { unfold A. pose proof (Rabs_pos p0); pose proof (Rabs_pos p1);
-    pose proof (Rabs_pos p2); pose proof (Rabs_pos p3).
-    assert (Rabs p0 * Rabs p1 <= M * M) by (apply Rmult_le_compat; lra).
-    assert (Rabs p2 * Rabs p3 <= M * M) by (apply Rmult_le_compat; lra).
-    split; [apply Rplus_le_le_0_compat; apply Rmult_le_pos|]; lra. }
-  assert (HB : 0 <= B <= 2 * (M * M)).
-  { unfold B. pose proof (Rabs_pos q0); pose proof (Rabs_pos q1);
-    pose proof (Rabs_pos q2); pose proof (Rabs_pos q3).
-    assert (Rabs q0 * Rabs q1 <= M * M) by (apply Rmult_le_compat; lra).
-    assert (Rabs q2 * Rabs q3 <= M * M) by (apply Rmult_le_compat; lra).
-    split; [apply Rplus_le_le_0_compat; apply Rmult_le_pos|]; lra. }
+  pose proof (pair_magnitude M p0 p1 p2 p3 H0 H1 H2 H3) as HA.
+  pose proof (pair_magnitude M q0 q1 q2 q3 K0 K1 K2 K3) as HB.
+  fold A in HA. fold B in HB.
   apply (near_weaken _ _ _ _ _ _ _ N).
   - apply Rmult_le_pos; lra.
   - unfold k1, u; lra.
