@@ -1043,42 +1043,31 @@ fn rounded_text(e: &Expr, every_op: bool) -> String {
 /// Reads a Coq term of the laws (`rnd (rnd (a * b) - c)`: `rnd` applied
 /// to a group or a name, other functions applied to a group, `+ - * /`,
 /// names, numbers) into the text of [`rounded_text`].
-struct CoqTerm {
-    t: Vec<String>,
-    i: usize,
-}
-
-impl CoqTerm {
-    fn peek(&self) -> Option<&str> {
-        self.t.get(self.i).map(String::as_str)
-    }
-    fn expr(&mut self) -> String {
-        let mut e = self.term();
-        while let Some(op @ ("+" | "-")) = self.peek() {
-            let op = op.to_owned();
+impl Parser {
+    /// Operands of `next` joined by `ops`, left to right.
+    fn coq_chain(&mut self, ops: [&str; 2], next: fn(&mut Self) -> String) -> String {
+        let mut e = next(self);
+        while let Some(op) = self.peek().filter(|t| ops.contains(t)).map(str::to_owned) {
             self.i += 1;
-            e = format!("({e} {op} {})", self.term());
+            e = format!("({e} {op} {})", next(self));
         }
         e
     }
-    fn term(&mut self) -> String {
-        let mut e = self.unary();
-        while let Some(op @ ("*" | "/")) = self.peek() {
-            let op = op.to_owned();
-            self.i += 1;
-            e = format!("({e} {op} {})", self.unary());
-        }
-        e
+    fn coq_expr(&mut self) -> String {
+        self.coq_chain(["+", "-"], Self::coq_term)
     }
-    fn unary(&mut self) -> String {
+    fn coq_term(&mut self) -> String {
+        self.coq_chain(["*", "/"], Self::coq_unary)
+    }
+    fn coq_unary(&mut self) -> String {
         match self.peek() {
             Some("-") => {
                 self.i += 1;
-                format!("(-{})", self.unary())
+                format!("(-{})", self.coq_unary())
             }
             Some("rnd") => {
                 self.i += 1;
-                let inner = self.primary();
+                let inner = self.coq_primary();
                 if inner.starts_with('(') {
                     format!("r{inner}")
                 } else {
@@ -1091,16 +1080,16 @@ impl CoqTerm {
             {
                 let f = f.to_owned();
                 self.i += 1;
-                format!("({f} {})", self.primary())
+                format!("({f} {})", self.coq_primary())
             }
-            _ => self.primary(),
+            _ => self.coq_primary(),
         }
     }
-    fn primary(&mut self) -> String {
+    fn coq_primary(&mut self) -> String {
         let t = self.t.get(self.i).cloned().unwrap_or_default();
         self.i += 1;
         if t == "(" {
-            let e = self.expr();
+            let e = self.coq_expr();
             assert_eq!(self.peek(), Some(")"), "a law's term: {:?}", self.t);
             self.i += 1;
             return e;
@@ -1142,11 +1131,11 @@ fn law_terms(law: &str) -> Vec<(String, String)> {
                 };
                 j += 1;
             }
-            let mut p = CoqTerm {
+            let mut p = Parser {
                 t: t[i + 4..j].to_vec(),
                 i: 0,
             };
-            let e = p.expr();
+            let e = p.coq_expr();
             assert_eq!(p.i, p.t.len(), "the law's term {name}: {:?}", p.t);
             out.push((name, e));
             i = j;
