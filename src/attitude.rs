@@ -40,9 +40,9 @@
 //!   accelerometer is averaged in an almost inertial frame by a
 //!   second-order Butterworth low-pass (VQF's central idea, in a simpler
 //!   filter), where linear accelerations average out. 256 bytes of state;
-//!   1,479 executed instructions per 6D update and 2,136 per 9D update
-//!   (2,161 with `mag_delay` set) on the emulated Cortex-M4F (`cargo
-//!   xtask filter-cost`, which CI holds to 1,600, 2,200 and 256 bytes).
+//!   `cargo xtask filter-cost` counts its instructions per update on the
+//!   emulated Cortex-M4F and CI holds them to 1,600 (6D) and 2,200 (9D)
+//!   (the counts: the attitude block of `docs/performance.md`).
 //! - Around the filter: the sensor mounting ([`AxesAlignment`], the 24
 //!   right-angle mountings) and calibrations ([`InertialCalibration`],
 //!   [`MagneticCalibration`]), the outputs (gravity, linear and earth
