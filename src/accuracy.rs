@@ -37,7 +37,7 @@
 //! | bound | value |
 //! | --- | --- |
 //! | [`MUL_MAX_ANGLE_ERROR`] | 1.2e-6 |
-//! | [`ROTATE_MAX_REL_ERROR`] | 6.0e-7 |
+//! | [`ROTATE_MAX_REL_ERROR`] | 6.5e-7 |
 //! | [`MATRIX_ENTRY_ERROR`] | 6.6e-7 |
 //! | [`INVERSE_MAX_REL_ERROR`] | 5.5e-7 |
 //! | [`NORMALIZE_MAX_NORM_ERROR`] | 2.4e-7 |
@@ -322,11 +322,11 @@ pub const MUL_MAX_ANGLE_ERROR: f32 = 1.2e-6; // 2.988e-7 (random), 3.324e-7 (sea
 /// rounding of a unit quaternion (`|e|` below 1.2e-7) the error against `R`
 /// measured 4.710e-7.
 ///
-/// Known: measured (3.3665e-7 against `F` by search, with `q` a result of
-/// `normalize`). `proofs/gappa/rotate.g` proves 3.8e-6: looser, since
-/// interval arithmetic bounds each component of `v + t w` by the sum of the
-/// parts' bounds where `v` and `t = 2 u x v` are orthogonal.
-pub const ROTATE_MAX_REL_ERROR: f32 = 6.0e-7; // 4.710e-7
+/// Known: proven: `proofs/coq/rotate_error.v` proves 6.5e-7 (Coq, on the
+/// certificate of `proofs/gappa/rotate.g`, for `|q|^2` within 2^-20 of 1
+/// and components in [-1, 1]). A search found 4.7482e-7
+/// (`proofs/tests/worst_cases.rs`, with `q` a result of `normalize`).
+pub const ROTATE_MAX_REL_ERROR: f32 = 6.5e-7; // 6.5e-7 proven; 4.7482e-7 (by search)
 /// Angle error of `q.pow(alpha)` for unit `q`, per radian of the rotation
 /// it returns and never less than this many radians: the error is at most
 /// `POW_MAX_ANGLE_ERROR * max(1, |alpha| theta)`, with `theta` the angle of

@@ -9,10 +9,12 @@
 # such a scaling, and the arithmetic commutes with it where nothing
 # underflows).
 #
-# Proven: the error vector's length at most 3.8e-6 |v| (on the way Gappa
+# Proven: the error vector's length at most 3.8e-6 |v|, on which
+# proofs/coq/rotate_error.v proves 6.5e-7 |v| (the constant's bound) by
+# vectors: it needs this bound for the length of the result. (On the way Gappa
 # bounds |t|^2 = |2 u x v|^2 by 4.00001 and each component of the result
 # within 13 2^-23 of the exact value of the same formula; those are not
-# goals, which halves Coq's time on the certificate). For unit q
+# goals, which halves Coq's time on the certificate.) For unit q
 # the formula is the rotation q [0, v] q^-1, which preserves length: the
 # result's length is within 3.8e-6 |v| of |v| (for |q|^2 = 1 + e, the
 # exact formula scales v by 1 + e besides).

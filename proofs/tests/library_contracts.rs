@@ -292,7 +292,7 @@ fn the_contracts_state_the_bounds_gappa_proves() {
         (
             "ROTATE_ERROR_PROVEN",
             c::ROTATE_ERROR_PROVEN,
-            "rotate.g",
+            "rotate_error.v",
             "ROTATE_MAX_REL_ERROR",
         ),
     ] {
