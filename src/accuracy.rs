@@ -76,7 +76,7 @@ mod backend {
     pub const ATAN2_MAX_ABS_ERROR: f32 = 3.2e-7; // 2.667e-7 (every f32 quotient, near pi; the kernel is within 1.6 ulp)
     pub const SIN_COS_MAX_ABS_ERROR: f32 = 6.4e-8; // 5.760e-8 at 2.359356 (every f32 of [-10, 10])
     pub const TAN_MAX_REL_ERROR: f32 = 1.2e-7; // 7.745e-8 at 0.12439033 (every f32 of [0.0087, 1.5621])
-    pub const UNIT_NORM_ERROR: f32 = 3.5e-7; // 2.572e-7 (slerp, random pairs); 1.4346e-7 (a product, relative to |a| |b|, by search)
+    pub const UNIT_NORM_ERROR: f32 = 3.5e-7; // 2.572e-7 (slerp, random pairs); 1.9720e-7 (a product, relative to |a| |b|, by search; 2.84e-7 proven)
     pub const POW_MAX_ANGLE_ERROR: f32 = 3.4e-7; // 2.580e-7 (pow), 2.725e-7 (to_axis_angle)
     pub const SLERP_MAX_ANGLE_ERROR: f32 = 5.2e-7; // 4.106e-7 (random pairs, alpha in [-1, 2])
     pub const FROM_SCALED_AXIS_MAX_REL_ERROR: f32 = 3.0e-7; // 2.426e-7
@@ -214,8 +214,8 @@ pub const TAN_MAX_REL_ERROR: f32 = backend::TAN_MAX_REL_ERROR;
 /// Known: proven: `proofs/coq/normalize_norm.v` proves 2.391e-7 (Coq, on
 /// the certificate of `proofs/gappa/normalize.g`; `normalize_scale.g` proves
 /// that the rescaled branches scale exactly or within 2^-150). A search
-/// found 1.8092e-7 (`proofs/tests/worst_cases.rs`).
-pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (random), 1.8092e-7 (by search)
+/// found 1.8335e-7 (`proofs/tests/worst_cases.rs`).
+pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (random), 1.8335e-7 (by search)
 /// The norm error an operation adds: `|norm - 1|` of the result of `pow`
 /// and `from_axis_angle` (on any finite input) and of `slerp` on unit
 /// inputs, there relative to the norm of its first input
@@ -224,15 +224,16 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// `| |a * b| / (|a| |b|) - 1 |`. The inputs' own distance from unit norm
 /// carries through a product: for two results of `normalize`, `|a * b|`
 /// is within `(1 + NORMALIZE_MAX_NORM_ERROR)^2 (1 + UNIT_NORM_ERROR) - 1`
-/// (8.3e-7) of 1, and a search found 4.588e-7 (`proofs/tests/worst_cases.rs`).
+/// (8.3e-7) of 1, and a search found 4.6884e-7 (`proofs/tests/worst_cases.rs`).
 ///
-/// Known: measured. For products, `proofs/gappa/mul.g` proves 7.16e-7 (for
-/// inputs within 2^-20 of unit norm, against `|a| |b|`), and for `pow`,
-/// `proofs/gappa/pow_norm.g` proves 6.56e-7 given the sine and cosine
-/// kernel's swept 1.25 ulp: both looser (the error vector's length bounds
-/// the norm's error). `slerp` and `from_axis_angle` have no model. The
-/// largest over random draws is 2.572e-7; the search over products of
-/// results of `normalize` found 1.4346e-7 relative to `|a| |b|`.
+/// Known: measured. For products, `proofs/coq/mul_norm.v` proves 2.84e-7
+/// (Coq, on the certificate of `proofs/gappa/mul.g`, relative to `|a| |b|`
+/// for inputs within 2^-20 of unit norm), and a search found 1.9720e-7
+/// (`proofs/tests/worst_cases.rs`); for `pow`, `proofs/gappa/pow_norm.g`
+/// proves 6.56e-7 given the sine and cosine kernel's swept 1.25 ulp
+/// (looser: the error vector's length bounds the norm's error). `slerp`
+/// and `from_axis_angle` have no model. The largest over random draws is
+/// 2.572e-7.
 pub const UNIT_NORM_ERROR: f32 = backend::UNIT_NORM_ERROR;
 /// `|norm - 1|` after a chain of 1,000,000 [`Quat::mul_renormalized`](crate::Quat::mul_renormalized)
 /// products cycling through 1,000 random rotations of up to 0.1 rad
@@ -318,7 +319,7 @@ pub const MUL_MAX_ANGLE_ERROR: f32 = 1.2e-6; // 2.988e-7 (random), 3.324e-7 (sea
 /// for `|q| = 1`. For `|q|^2 = 1 + e`, `F(v) = |q|^2 R(v) + (1 - |q|^2) v`
 /// with `R` the rotation by `q / |q|`: off `R(v)` by at most `2 |e| |v|`
 /// besides, which for a result of `normalize` (`|e|` up to 4.4e-7) a search
-/// reaches, 9.359e-7 against `R` (`proofs/tests/worst_cases.rs`); for the f32
+/// reaches, 9.5991e-7 against `R` (`proofs/tests/worst_cases.rs`); for the f32
 /// rounding of a unit quaternion (`|e|` below 1.2e-7) the error against `R`
 /// measured 4.710e-7.
 ///

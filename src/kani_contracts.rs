@@ -30,6 +30,9 @@ pub const NORMALIZE_NORM_PROVEN: f64 = 2.391e-7;
 /// components in [-1, 1] and squared norms within 2^-20 of 1 against the
 /// exact product of the same f32 inputs: `proofs/gappa/mul.g`.
 pub const MUL_ERROR_PROVEN: f64 = 7.16e-7;
+/// `| |a * b| / (|a| |b|) - 1 |` for the same inputs:
+/// `proofs/coq/mul_norm.v`, on the certificate of `proofs/gappa/mul.g`.
+pub const MUL_NORM_PROVEN: f64 = 2.84e-7;
 /// The length of the error vector of `q * v` against the exact value of
 /// the same formula, relative to `|v|`, for `q` with components in
 /// [-1, 1] and `|q|^2` within 2^-20 of 1, and `v` with components in
@@ -43,8 +46,9 @@ pub const ROTATE_ERROR_PROVEN: f64 = 6.5e-7;
 pub const UNIT_TOL: f64 = NORMALIZE_NORM_PROVEN;
 /// `| |a * b| - 1 |` for unit `a`, `b` (norms within [`UNIT_TOL`] of 1):
 /// `|a| |b|` is within `2 UNIT_TOL + UNIT_TOL^2` of 1, and the computed
-/// product within [`MUL_ERROR_PROVEN`] of the exact one.
-pub const MUL_OF_UNITS_TOL: f64 = 2.0 * UNIT_TOL + UNIT_TOL * UNIT_TOL + MUL_ERROR_PROVEN;
+/// product's norm within [`MUL_NORM_PROVEN`] of it, relative.
+pub const MUL_OF_UNITS_TOL: f64 =
+    2.0 * UNIT_TOL + UNIT_TOL * UNIT_TOL + MUL_NORM_PROVEN * (1.0 + UNIT_TOL) * (1.0 + UNIT_TOL);
 /// `| |q * v| - |v| |`, relative to `|v|`, for unit `q` and `v` in
 /// `rotate.g`'s domain: the formula `v + 2 w (u x v) + 2 u x (u x v)` is
 /// the rotation plus `(1 - |q|^2) v`, so it is off the length of `v` by at

@@ -50,6 +50,10 @@ Proof.
   nra.
 Qed.
 
+(* Half of nv at least: a small absolute term is a multiple of nv. *)
+Lemma half_le : forall nv k, / 2 <= nv -> 0 <= k -> k <= nv * (2 * k).
+Proof. intros; nra. Qed.
+
 (* The five lengths added, each bounded through the ones before it: a the
    first cross product's error, NT = |t|, Nmu the roundings of t w, Nsig
    those of v + m, Ngam the second cross product's, NL the error of t
@@ -90,30 +94,36 @@ Proof.
   (* The terms, each nv times a factor. *)
   assert (Hmu2 : Nmu <= nv * (2 * u0 * (c * s) + 2 * 1.001 * u0 * (2.1572 * u0) + 4 * e)).
   { assert (u0 * c * NT <= u0 * c * (nv * (2 * s + 2 * al))) by (apply Rmult_le_compat_l; nra).
-    assert (u0 * c * al <= u0 * 1.001 * (2.1572 * u0)) by (apply Rmult_le_compat; nra).
-    assert (2 * e <= nv * (4 * e)) by nra.
+    assert (u0 * c * al <= u0 * 1.001 * (2.1572 * u0)).
+    { apply Rmult_le_compat; [apply Rmult_le_pos; lra|unfold al; apply Rplus_le_le_0_compat; [apply Rmult_le_pos|]; lra|
+        apply Rmult_le_compat_l; lra|lra]. }
+    assert (2 * e <= nv * (2 * (2 * e))) by (apply half_le; lra).
     assert (nv * (u0 * c * al) <= nv * (u0 * 1.001 * (2.1572 * u0))) by (apply Rmult_le_compat_l; lra).
     nra. }
   assert (Hmu3 : Nmu <= nv * (2 * u0 * 1.001 + 2 * 1.001 * u0 * (2.1572 * u0) + 4 * e)).
-  { assert (nv * (2 * u0 * (c * s)) <= nv * (2 * u0 * 1.001)) by (apply Rmult_le_compat_l; nra). lra. }
+  { assert (nv * (2 * u0 * (c * s)) <= nv * (2 * u0 * 1.001)).
+    { apply Rmult_le_compat_l; [lra|]. apply Rmult_le_compat_l; lra. }
+    lra. }
   assert (Hsig2 : Nsig <= nv * (u0 * (1 + 2 * (c * s) * (c * s))
                    + u0 * (2 * u0 * 1.001 + 2 * 1.001 * u0 * (2.1572 * u0) + 4 * e + 2 * 1.001 * (2.1572 * u0)) + 4 * e)).
   { assert (c * a <= 1.001 * (nv * (2.1572 * u0))) by (apply Rmult_le_compat; nra).
-    assert (2 * e <= nv * (4 * e)) by nra.
+    assert (2 * e <= nv * (2 * (2 * e))) by (apply half_le; lra).
     assert (u0 * (Nmu + 2 * c * a) <= u0 * (nv * (2 * u0 * 1.001 + 2 * 1.001 * u0 * (2.1572 * u0) + 4 * e) + 2 * (1.001 * (nv * (2.1572 * u0)))))
       by (apply Rmult_le_compat_l; lra).
     nra. }
   assert (Hgam2 : Ngam <= nv * (k * (2 * (s * s)) + 2 * 1.001 * (2.15481 * u0) * (2.1572 * u0) + 16 * e)).
   { assert (k * (s * NT) <= k * (s * (nv * (2 * s + 2 * al)))) by (apply Rmult_le_compat_l; [lra|]; apply Rmult_le_compat_l; lra).
-    assert (k * s * al <= 2.15481 * u0 * 1.001 * (2.1572 * u0)) by (apply Rmult_le_compat; nra).
+    assert (k * s * al <= 2.15481 * u0 * 1.001 * (2.1572 * u0)).
+    { apply Rmult_le_compat; [apply Rmult_le_pos; lra|unfold al; apply Rplus_le_le_0_compat; [apply Rmult_le_pos|]; lra| |lra].
+      assert (2.15481 * u0 * s <= 2.15481 * u0 * 1.001) by (apply Rmult_le_compat_l; lra). lra. }
     assert (nv * (k * s * al) <= nv * (2.15481 * u0 * 1.001 * (2.1572 * u0))) by (apply Rmult_le_compat_l; lra).
-    assert (8 * e <= nv * (16 * e)) by nra.
+    assert (8 * e <= nv * (2 * (8 * e))) by (apply half_le; lra).
     nra. }
   assert (HL2 : NL <= nv * ((1 + / 1048576) * 2 * al)) by nra.
   assert (Hrho2 : Nrho * (1 - u0) <= u0 * (1 + 1e-5) * nv + 2 * e).
   { assert (u0 * Nr <= u0 * ((1 + 1e-5) * nv)) by (apply Rmult_le_compat_l; lra). lra. }
   assert (Hrho3 : Nrho <= nv * (1.0000101 * u0)).
-  { assert (2 * e <= nv * (4 * e)) by nra. rewrite Hu in *. nra. }
+  { rewrite Hu in *. lra. }
   pose proof (rotate_scalar s c Hs Hc Hq) as Sc.
   assert (K2 : k * (s * s) <= 2.15481 * u0 * (s * s)) by (apply Rmult_le_compat_r; nra).
   set (B := 1.0000101 * u0

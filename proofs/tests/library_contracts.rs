@@ -277,10 +277,11 @@ fn hypothesis(model: &str, name: &str) -> (f64, f64) {
 #[test]
 fn the_contracts_state_the_bounds_gappa_proves() {
     for (name, stated, model, constant) in [
+        ("MUL_ERROR_PROVEN", c::MUL_ERROR_PROVEN, "mul.g", "-"),
         (
-            "MUL_ERROR_PROVEN",
-            c::MUL_ERROR_PROVEN,
-            "mul.g",
+            "MUL_NORM_PROVEN",
+            c::MUL_NORM_PROVEN,
+            "mul_norm.v",
             "UNIT_NORM_ERROR",
         ),
         (

@@ -116,6 +116,119 @@ fn product_deviation(v: [f32; 8]) -> f64 {
     }
 }
 
+/// `| |a b| / (|a| |b|) - 1 |` for `a` the first four inputs and `b` the
+/// last four as they are (0 where `|a|^2` or `|b|^2` is not within 2^-20
+/// of 1, the domain of the product's proof).
+fn product_deviation_raw(v: [f32; 8]) -> f64 {
+    let a = Quat::from_wxyz(v[0], v[1], v[2], v[3]);
+    let b = Quat::from_wxyz(v[4], v[5], v[6], v[7]);
+    let (na, nb) = (norm64(a), norm64(b));
+    let near = |n: f64| (n * n - 1.0).abs() <= 2f64.powi(-20);
+    if !near(na) || !near(nb) {
+        return 0.0;
+    }
+    (norm64(a * b) / (na * nb) - 1.0).abs()
+}
+
+/// The product's terms, component by component (w, x, y, z), in the order
+/// the code sums them: the sign and the indices (w, x, y, z = 0 to 3) of
+/// the factors of `a` and `b`.
+const PRODUCT_TERMS: [[(f64, usize, usize); 4]; 4] = [
+    [(1.0, 0, 0), (-1.0, 1, 1), (-1.0, 2, 2), (-1.0, 3, 3)],
+    [(1.0, 0, 1), (1.0, 1, 0), (1.0, 2, 3), (-1.0, 3, 2)],
+    [(1.0, 0, 2), (-1.0, 1, 3), (1.0, 2, 0), (1.0, 3, 1)],
+    [(1.0, 0, 3), (1.0, 1, 2), (-1.0, 2, 1), (1.0, 3, 0)],
+];
+
+/// Half an ulp of `x` as an f32, over 2^-24 (the largest rounding error
+/// of `x`, as a multiple of 2^-24).
+fn half_ulp(x: f64) -> f64 {
+    if x == 0.0 {
+        0.0
+    } else {
+        2f64.powi(x.abs().log2().floor() as i32)
+    }
+}
+
+/// The product's norm error if every rounding were half an ulp of its
+/// result with the sign that moves the norm most, to first order, in units
+/// of 2^-24: each component's half ulps of its terms and partial sums,
+/// weighted by the component, over `|a b|^2`, for `a` and `b` the first
+/// and last four of `x` made unit.
+fn aligned_roundings(x: [f64; 8]) -> f64 {
+    let unit = |v: &[f64]| {
+        let n = v.iter().map(|c| c * c).sum::<f64>().sqrt();
+        [v[0] / n, v[1] / n, v[2] / n, v[3] / n]
+    };
+    let (a, b) = (unit(&x[..4]), unit(&x[4..]));
+    let (mut weighted, mut squares) = (0.0, 0.0);
+    for terms in PRODUCT_TERMS {
+        let t = terms.map(|(s, j, k)| s * a[j] * b[k]);
+        let sums = [t[0] + t[1], t[0] + t[1] + t[2], t[0] + t[1] + t[2] + t[3]];
+        let p = sums[2];
+        let halves: f64 = t.iter().chain(&sums).map(|&v| half_ulp(v)).sum();
+        weighted += p.abs() * halves;
+        squares += p * p;
+    }
+    weighted / squares
+}
+
+/// A targeted search for the product's worst case: where the roundings
+/// can align. Climbs on [`aligned_roundings`] (in f64, shrinking steps)
+/// give `starts` structured pairs; the best few are rounded to f32
+/// through `normalize`, each perturbed `restarts` times and climbed on the
+/// product's own error; around the best, the inputs themselves (not
+/// through `normalize`, within the proof's domain) are climbed last.
+fn targeted_product_search(d: &mut Draws, starts: usize, restarts: usize, steps: usize) -> f64 {
+    let mut found: Vec<(f64, [f64; 8])> = Vec::new();
+    for _ in 0..starts {
+        let mut x: [f64; 8] = core::array::from_fn(|_| f64::from(d.uniform(-1.0, 1.0)));
+        let mut e = aligned_roundings(x);
+        let mut step = 0.3;
+        for i in 0..6_000 {
+            let mut y = x;
+            y[d.below(8)] += step * f64::from(d.uniform(-1.0, 1.0));
+            let f = aligned_roundings(y);
+            if f > e {
+                (x, e) = (y, f);
+            }
+            if i % 600 == 599 {
+                step *= 0.5;
+            }
+        }
+        found.push((e, x));
+    }
+    found.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let mut best = ([0f32; 8], 0.0);
+    for (_, x) in found.iter().take(4) {
+        for _ in 0..restarts {
+            let start: [f32; 8] = core::array::from_fn(|j| {
+                (x[j] * (1.0 + 1e-3 * f64::from(d.uniform(-1.0, 1.0)))) as f32
+            });
+            let (mut y, mut e) = (start, 0.0);
+            for reach in [256, 8] {
+                (y, e) = climb(d, y, steps / 2, reach, &product_deviation);
+            }
+            if e > best.1 {
+                best = (y, e);
+            }
+        }
+    }
+    let a = Quat::from_wxyz(best.0[0], best.0[1], best.0[2], best.0[3]).normalize();
+    let b = Quat::from_wxyz(best.0[4], best.0[5], best.0[6], best.0[7]).normalize();
+    let unit = [a.w, a.x, a.y, a.z, b.w, b.x, b.y, b.z];
+    let mut worst = best.1.max(product_deviation_raw(unit));
+    for _ in 0..restarts {
+        let start = unit.map(|c| nudge(d, c, 3));
+        let (mut y, mut e) = (start, 0.0);
+        for reach in [16, 2] {
+            (y, e) = climb(d, y, steps / 2, reach, &product_deviation_raw);
+        }
+        worst = worst.max(e);
+    }
+    worst
+}
+
 /// `|q v - F(v)| / |v|` ([`rotation_errors`]) for `q` the result of
 /// `normalize` on the first four inputs and `v` the last three (0 where
 /// they are not finite or `v` is 0).
@@ -177,8 +290,9 @@ struct Found {
 /// The searches: `normalize` from `climbs` climbs; the products of every
 /// pair of the `pair` results of `normalize` with the largest norm errors
 /// of one sign (where the errors add); the rotations of random vectors by
-/// the first `pair` of them; and `climbs / 10` climbs of `steps` steps on
-/// the product's and the rotation's own errors.
+/// the first `pair` of them; `climbs / 10` climbs of `steps` steps on
+/// the product's and the rotation's own errors; and the targeted search
+/// of the product ([`targeted_product_search`], `climbs / 16` restarts).
 fn search(climbs: usize, pair: usize, steps: usize, seed: u64) -> Found {
     let (pool, normalize) = normalized_pool(climbs, seed);
     let (low, high): (Vec<Quat>, Vec<Quat>) = pool.iter().partition(|q| norm64(**q) < 1.0);
@@ -207,6 +321,7 @@ fn search(climbs: usize, pair: usize, steps: usize, seed: u64) -> Found {
         product_own = product_own.max(climb_far(&mut d, steps, &product_deviation));
         rotation_formula = rotation_formula.max(climb_far(&mut d, steps, &rotation_deviation));
     }
+    product_own = product_own.max(targeted_product_search(&mut d, 200, climbs / 16, steps));
     Found {
         normalize,
         product_own,
@@ -225,11 +340,11 @@ fn check(f: &Found) {
         f.normalize
     );
     println!(
-        "| |a b| / (|a| |b|) - 1 |, a, b results of normalize: {:.4e} (UNIT_NORM_ERROR {u:e})",
+        "| |a b| / (|a| |b|) - 1 |, a, b within 2^-20 of unit norm: {:.4e} (UNIT_NORM_ERROR {u:e})",
         f.product_own
     );
     println!(
-        "| |a b| - 1 |, the same: {:.4e} (composed: {:.4e})",
+        "| |a b| - 1 |, a, b results of normalize: {:.4e} (composed: {:.4e})",
         f.product_to_unit,
         composed(n, u)
     );

@@ -18,7 +18,8 @@
 //!   the constant's proven bound is the largest of theirs);
 //! - `#! looser NAME VALUE what`: the quantity `NAME` bounds, on part of
 //!   its domain or for one of its operations, is at most `VALUE`, which
-//!   is above the constant (the constant is then only measured);
+//!   is above the constant or covers only that part (the constant is then
+//!   only measured);
 //! - `#! law - VALUE what`: a law of the contract without a constant.
 //!
 //! `VALUE` must be the upper end of one of the model's goals, written the

@@ -14,7 +14,9 @@
 //! `(*! bound NAME THEOREM <= VALUE what *)`: the constant `NAME` of
 //! `src/accuracy.rs` is at most `VALUE` because the theorem `THEOREM` of
 //! the file, whose statement ends with `<= VALUE.`, is checked by coqc and
-//! rests on no axiom beyond those of Coq's real numbers. `VALUE` must not
+//! rests on no axiom beyond those of Coq's real numbers. `looser` in place
+//! of `bound` says the same of one of the constant's operations only (the
+//! constant then stays swept or measured), as a model's `#! looser` does. `VALUE` must not
 //! appear elsewhere in the statement (as a hypothesis), and the file must
 //! not admit anything.
 
@@ -68,7 +70,7 @@ fn parse_claim(line: &str) -> Result<(Claim, String)> {
     let [kind, name, theorem, "<=", value, ..] = words[..] else {
         bail!("`(*!{line}*)` is not `bound NAME THEOREM <= VALUE what`");
     };
-    if kind != "bound" && kind != "law" {
+    if !matches!(kind, "bound" | "looser" | "law") {
         bail!("unknown claim `{kind}`");
     }
     let text = words[5..].join(" ");
