@@ -99,8 +99,9 @@ impl Quat {
     /// # Accuracy
     ///
     /// Within [`accuracy::TO_SCALED_AXIS_MAX_REL_ERROR`](crate::accuracy::TO_SCALED_AXIS_MAX_REL_ERROR)
-    /// times the vector's length, for unit input, from subnormal angles to
-    /// 2 pi; `from_scaled_axis(a * q.to_scaled_axis())` is within
+    /// times the vector's length, for unit input, from angles of 2^-99 to
+    /// 2 pi (below, the result's components round absolutely, near or
+    /// below f32's normal range); `from_scaled_axis(a * q.to_scaled_axis())` is within
     /// [`accuracy::EXP_LOG_POW_MAX_ANGLE_ERROR`](crate::accuracy::EXP_LOG_POW_MAX_ANGLE_ERROR)
     /// `* max(1, |a| theta)` radians of `q.pow(a)`
     /// (`tests/attitude.rs`).
