@@ -763,6 +763,61 @@ fn power_is_pow_norm_g() {
     );
 }
 
+/// polar_angle.g: `pow`'s vector part, `to_scaled_axis` and the angle of
+/// `to_axis_angle` (x's component; y and z are the same operations), in
+/// the branch of scale_for_squares without rescaling, with `ph`, `s` and
+/// `c` the library's kernels on the arguments the code hands them.
+#[test]
+fn polar_maps_are_polar_angle_g() {
+    let Some(m) = model("polar_angle", Code::F32) else {
+        return;
+    };
+    assert_eq!(m.inputs, ["x", "y", "z", "ph", "al", "s", "c"]);
+    let mut kept = 0;
+    for (i, mut d) in draws() {
+        let q = if i % 2 == 0 {
+            d.unit_quat()
+        } else {
+            quat(core::array::from_fn(|_| component(&mut d)))
+        };
+        let alpha = match i % 5 {
+            0 => d.f32_mixed(),
+            1 => d.uniform(-1e6, 1e6),
+            _ => d.uniform(-4.0, 4.0),
+        };
+        if !(q.is_finite() && alpha.is_finite()) || alpha.abs() > f32::MAX / 4.0 {
+            continue;
+        }
+        let inputs = [q.x, q.y, q.z, 0.0, 0.0, 0.0, 0.0].map(f64::from);
+        let beta_sq = m.run(&inputs)["q"];
+        if !(2f64.powi(-100)..=f64::from(f32::MAX)).contains(&beta_sq) {
+            continue;
+        }
+        let beta = kani_kernels::sqrt(beta_sq as f32);
+        let phi = kani_kernels::atan2(beta, q.w * 1.0);
+        let (s, c) = kani_kernels::sin_cos(alpha * phi);
+        let v = [q.x, q.y, q.z, phi, alpha, s, c];
+        let out = m.run(&v.map(f64::from));
+        let p = q.pow(alpha);
+        assert_eq!(
+            p.w.to_bits(),
+            c.to_bits(),
+            "polar_angle: w for {q:?}, {alpha}"
+        );
+        check(&m, &out, "rx", p.x, &v);
+        check(&m, &out, "vx", q.to_scaled_axis().x, &v);
+        // to_axis_angle turns q.cn(), which is q where w >= 0.
+        if q.w >= 0.0 {
+            check(&m, &out, "t", q.to_axis_angle().1, &v);
+        }
+        kept += 1;
+    }
+    assert!(
+        kept > DRAWS / 2,
+        "{kept} of {DRAWS} draws in the model's branch"
+    );
+}
+
 /// cos_poly.g: the kernel's cosine for every argument in [0, pi/4], where
 /// it is the polynomial with the tail 0 (random arguments, raw bit
 /// patterns of the range, and its ends).

@@ -651,3 +651,120 @@ fn determinants_found_stay_within_their_constants() {
 fn deep_determinant_search() {
     determinants_within_their_constants(100_000);
 }
+
+/// The rotation angle between the f32 quaternion `got` and the unit
+/// 4-vector `exact`: twice the angle between their lines, `4 asin(d / 2)`
+/// with `d` the distance of `got / |got|` from the nearer of `exact`,
+/// `-exact`.
+fn rotation_angle(got: Quat, exact: [f64; 4]) -> f64 {
+    let g = q64(got);
+    let n = norm64(got);
+    let d = |sign: f64| {
+        (0..4)
+            .map(|i| (g[i] / n - sign * exact[i]).powi(2))
+            .sum::<f64>()
+            .sqrt()
+    };
+    4.0 * (d(1.0).min(d(-1.0)) / 2.0).asin()
+}
+
+/// The polar form of `q` in f64: its angle `phi = atan2(|v|, w)` (half
+/// the rotation's angle) and its unit axis.
+fn polar64(q: Quat) -> (f64, [f64; 3]) {
+    let [w, x, y, z] = q64(q);
+    let beta = (x * x + y * y + z * z).sqrt();
+    (beta.atan2(w), [x / beta, y / beta, z / beta])
+}
+
+/// The errors of the polar maps at `[w, x, y, z, alpha]`, in the forms of
+/// their constants: `q.pow(alpha)`'s angle error over `max(1, |alpha|
+/// theta)` and `to_axis_angle`'s angle error over `max(1, theta)` (its
+/// `theta` that of `q.cn()`, at most pi)
+/// (`POW_MAX_ANGLE_ERROR`), and `|to_scaled_axis - theta k| / theta`
+/// (`TO_SCALED_AXIS_MAX_REL_ERROR`), `theta = 2 phi` the angle of `q`. 0
+/// outside the constants' domain (unit `q`: squared norm within 2^-20 of
+/// 1, no component beyond 1; `alpha` up to 1000) and where `q` has no axis.
+fn polar_errors(v: [f32; 5]) -> [f64; 3] {
+    let q = Quat::from_wxyz(v[0], v[1], v[2], v[3]);
+    let alpha = v[4];
+    let unit =
+        (norm64(q).powi(2) - 1.0).abs() <= 2f64.powi(-20) && q64(q).iter().all(|c| c.abs() <= 1.0);
+    if !unit || !(alpha.abs() <= 1000.0) || (q.x, q.y, q.z) == (0.0, 0.0, 0.0) {
+        return [0.0; 3];
+    }
+    let (phi, k) = polar64(q);
+    let theta = 2.0 * phi;
+    let turn = f64::from(alpha) * phi;
+    let (s, c) = turn.sin_cos();
+    let exact = [c, s * k[0], s * k[1], s * k[2]];
+    let pow = rotation_angle(q.pow(alpha), exact) / (f64::from(alpha).abs() * theta).max(1.0);
+    // to_axis_angle takes the short way: the angle of q.cn(), w >= 0.
+    let short = 2.0 * polar64(q.cn()).0;
+    let (_, angle) = q.to_axis_angle();
+    let axis_angle = (f64::from(angle) - short).abs() / short.max(1.0);
+    let r = q.to_scaled_axis();
+    let got = [r.x, r.y, r.z].map(f64::from);
+    let scaled = (0..3)
+        .map(|i| (got[i] - theta * k[i]).powi(2))
+        .sum::<f64>()
+        .sqrt()
+        / theta;
+    [pow, axis_angle, scaled]
+}
+
+/// The largest of `climbs` climbs of each of `polar_errors` from f32
+/// roundings of unit quaternions (a quarter of them turned by less than
+/// 1e-3 rad, a quarter nearly half a turn, where atan2's relative error
+/// and the axis's weight change) and `alpha` uniform in [-2, 3].
+fn polar_search(climbs: usize, seed: u64) -> [f64; 3] {
+    let mut d = Draws::new(seed);
+    let mut worst = [0f64; 3];
+    for k in 0..climbs {
+        let mut q = d.unit_quat();
+        match k % 4 {
+            0 => q = Quat::from_wxyz(1.0, q.x * 1e-3, q.y * 1e-3, q.z * 1e-3).normalize(),
+            1 => q = Quat::from_wxyz(q.w * 1e-3, q.x, q.y, q.z).normalize(),
+            _ => {}
+        }
+        let start = [q.w, q.x, q.y, q.z, d.uniform(-2.0, 3.0)];
+        for (i, w) in worst.iter_mut().enumerate() {
+            *w = w.max(climb(&mut d, start, 400, &|v| polar_errors(v)[i]).1);
+        }
+    }
+    worst
+}
+
+/// The polar maps' searches against their constants.
+fn polar_maps_within_their_constants(climbs: usize) {
+    use rigtform::accuracy::{POW_MAX_ANGLE_ERROR, TO_SCALED_AXIS_MAX_REL_ERROR};
+    let [pow, axis_angle, scaled] = polar_search(climbs, 13);
+    within(
+        "angle of q.pow(alpha), per max(1, |alpha| theta)",
+        pow,
+        "POW_MAX_ANGLE_ERROR",
+        POW_MAX_ANGLE_ERROR,
+    );
+    within(
+        "angle of q.to_axis_angle(), per max(1, theta)",
+        axis_angle,
+        "POW_MAX_ANGLE_ERROR",
+        POW_MAX_ANGLE_ERROR,
+    );
+    within(
+        "q.to_scaled_axis(), relative",
+        scaled,
+        "TO_SCALED_AXIS_MAX_REL_ERROR",
+        TO_SCALED_AXIS_MAX_REL_ERROR,
+    );
+}
+
+#[test]
+fn polar_maps_found_stay_within_their_constants() {
+    polar_maps_within_their_constants(300);
+}
+
+#[test]
+#[ignore = "seconds in release: the search the constants' docs quote"]
+fn deep_polar_search() {
+    polar_maps_within_their_constants(30_000);
+}

@@ -27,7 +27,7 @@ impl Quat {
     /// evaluates a Taylor series with no square root, division or
     /// trigonometric function, within
     /// [`FROM_SCALED_AXIS_MAX_REL_ERROR`](crate::accuracy::FROM_SCALED_AXIS_MAX_REL_ERROR)
-    /// of the angle relative to it, however small.
+    /// of the angle relative to it, down to f32's normal range (1e-38 rad).
     ///
     /// # Preconditions
     ///
@@ -39,8 +39,9 @@ impl Quat {
     ///
     /// Rotation error at most
     /// [`accuracy::FROM_SCALED_AXIS_MAX_REL_ERROR`](crate::accuracy::FROM_SCALED_AXIS_MAX_REL_ERROR)
-    /// times `|v|` radians (relative to the angle, from subnormal angles to
-    /// 1000 rad), norm within
+    /// times `|v|` radians (relative to the angle, from 1e-38 rad, f32's
+    /// normal range, to 1000 rad; below, the subnormal components' products
+    /// round absolutely), norm within
     /// [`accuracy::UNIT_NORM_ERROR`](crate::accuracy::UNIT_NORM_ERROR) of 1
     /// (`scaled_axis_maps_are_within_their_bounds` in `tests/attitude.rs`).
     ///
@@ -99,8 +100,9 @@ impl Quat {
     /// # Accuracy
     ///
     /// Within [`accuracy::TO_SCALED_AXIS_MAX_REL_ERROR`](crate::accuracy::TO_SCALED_AXIS_MAX_REL_ERROR)
-    /// times the vector's length, for unit input, from subnormal angles to
-    /// 2 pi; `from_scaled_axis(a * q.to_scaled_axis())` is within
+    /// times the vector's length, for unit input, from angles of 2^-99 to
+    /// 2 pi (below, the result's components round absolutely, near or
+    /// below f32's normal range); `from_scaled_axis(a * q.to_scaled_axis())` is within
     /// [`accuracy::EXP_LOG_POW_MAX_ANGLE_ERROR`](crate::accuracy::EXP_LOG_POW_MAX_ANGLE_ERROR)
     /// `* max(1, |a| theta)` radians of `q.pow(a)`
     /// (`tests/attitude.rs`).
