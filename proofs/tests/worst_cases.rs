@@ -483,3 +483,81 @@ fn determinants_found_stay_within_their_constants() {
 fn deep_determinant_search() {
     determinants_within_their_constants(100_000);
 }
+
+/// The largest error of an entry of `Matrix3::inverse`, over the nine,
+/// as `MATRIX3_INVERSE_MAX_REL_ERROR` measures it: `|entry - M / D|`
+/// over `(Am + |M| T / |D|) / |D|`, with `M` the entry's minor, `Am` the
+/// magnitudes of its two products, `D` the determinant and `T` the
+/// magnitudes of its expansion's six products (the minors and `D` in
+/// f64, where a product of two or three f32 is exact or rounds by 2^-53).
+/// 0 outside the constant's domain (`T` above 4096 `|D|`) or where there
+/// is no inverse.
+fn matrix3_inverse_error(v: [f32; 9]) -> f64 {
+    let (det, total) = leibniz(&v, 3);
+    if total > 4096.0 * det.abs() {
+        return 0.0;
+    }
+    let Some(inv) = rigtform::Matrix3::from_cols_array(&v).inverse() else {
+        return 0.0;
+    };
+    let got = inv.to_cols_array();
+    let col = |c: usize| [v[3 * c], v[3 * c + 1], v[3 * c + 2]].map(f64::from);
+    let mut worst = 0f64;
+    // Row i of the inverse: the cross product of the columns after i.
+    for i in 0..3 {
+        let (p, q) = (col((i + 1) % 3), col((i + 2) % 3));
+        for j in 0..3 {
+            let (k, l) = ((j + 1) % 3, (j + 2) % 3);
+            let minor = p[k] * q[l] - p[l] * q[k];
+            let terms = (p[k] * q[l]).abs() + (p[l] * q[k]).abs();
+            let scale = (terms + minor.abs() * total / det.abs()) / det.abs();
+            let error = (f64::from(got[3 * j + i]) - minor / det).abs();
+            worst = worst.max(error / scale);
+        }
+    }
+    worst
+}
+
+/// The largest of `climbs` climbs of `matrix3_inverse_error` from
+/// matrices with entries in [-1, 1], most of them nearly singular (the
+/// last column a combination of the others plus a small part of its own,
+/// so that the expansion cancels by up to the domain's 2^12).
+fn matrix3_inverse_search(climbs: usize, seed: u64) -> f64 {
+    let mut d = Draws::new(seed);
+    let mut worst = 0f64;
+    for k in 0..climbs {
+        let mut start: [f32; 9] = core::array::from_fn(|_| d.uniform(-1.0, 1.0));
+        if k % 4 != 0 {
+            let (p, q) = (d.uniform(-1.0, 1.0), d.uniform(-1.0, 1.0));
+            let own = 2f32.powi(-(d.below(11) as i32));
+            for r in 0..3 {
+                start[6 + r] = p * start[r] + q * start[3 + r] + own * start[6 + r];
+            }
+        }
+        worst = worst.max(climb(&mut d, start, 400, &matrix3_inverse_error).1);
+    }
+    worst
+}
+
+#[test]
+fn matrix3_inverse_found_stays_within_its_constant() {
+    use rigtform::accuracy::MATRIX3_INVERSE_MAX_REL_ERROR;
+    within(
+        "Matrix3::inverse, per entry",
+        matrix3_inverse_search(400, 13),
+        "MATRIX3_INVERSE_MAX_REL_ERROR",
+        MATRIX3_INVERSE_MAX_REL_ERROR,
+    );
+}
+
+#[test]
+#[ignore = "seconds in release: the search the constant's doc quotes"]
+fn deep_matrix3_inverse_search() {
+    use rigtform::accuracy::MATRIX3_INVERSE_MAX_REL_ERROR;
+    within(
+        "Matrix3::inverse, per entry",
+        matrix3_inverse_search(100_000, 13),
+        "MATRIX3_INVERSE_MAX_REL_ERROR",
+        MATRIX3_INVERSE_MAX_REL_ERROR,
+    );
+}
