@@ -64,7 +64,7 @@
 //! | [`SAMPLER_VEC3_MAX_REL_ERROR`] | 2.5e-6 |
 //! | [`ANGLE_BETWEEN_MAX_ERROR`] | 4.2e-7 |
 //! | [`PROJECT_MAX_REL_ERROR`] | 4.5e-7 |
-//! | [`MATRIX3_INVERSE_MAX_REL_ERROR`] | 2.5e-7 |
+//! | [`MATRIX3_INVERSE_MAX_REL_ERROR`] | 3.6e-7 |
 //! | [`MATRIX3_DETERMINANT_MAX_REL_ERROR`] | 3.0e-7 |
 //! | [`LOOK_AT_RH_MAX_TRANSLATION_ERROR`] | 1.1e-6 |
 //! | [`SRT_ROTATION_MAX_ANGLE_ERROR`] | 9.0e-7 |
@@ -492,13 +492,28 @@ pub const SRT_ROTATION_MAX_ANGLE_ERROR: f32 = 9.0e-7; // 7.084e-7
 ///
 /// Known: measured: the largest error over the draws in its doc, rounded up.
 pub const SRT_SCALE_MAX_REL_ERROR: f32 = 9.5e-7; // 7.610e-7
-/// Error of [`Matrix3::inverse`](crate::Matrix3::inverse) relative to the
-/// inverse's size (Frobenius norm), per unit of the matrix's condition
-/// number: random 3x3 matrices with entries in [-1, 1] and condition below
-/// 1e4, against nalgebra's f64 inverse.
+/// Error of an entry of [`Matrix3::inverse`](crate::Matrix3::inverse),
+/// `|entry - M / D|` with `M` the entry's minor (a component of a cross
+/// product of two columns) and `D` the determinant, relative to
+/// `(Am + |M| T / |D|) / |D|`: `Am` the sum of the magnitudes of the
+/// minor's two products, `T` that of the six products of the
+/// determinant's expansion (as [`MATRIX3_DETERMINANT_MAX_REL_ERROR`]).
+/// The first part is the minor's own rounding, the second the
+/// determinant's error carried into every entry through `1 / det`; `T /
+/// |D|` is how much the expansion cancels, which grows with the
+/// condition number. For every matrix whose expansion cancels by at most
+/// 2^12 (`T <= 4096 |D|`), where nothing underflows or overflows (after
+/// scaling the largest entry to 1, `|D|` at least 2^-100; besides that,
+/// `4 2^-150 (1 + 1 / |D|)` near underflow).
 ///
-/// Known: measured: the largest error over the draws in its doc, rounded up.
-pub const MATRIX3_INVERSE_MAX_REL_ERROR: f32 = 2.5e-7; // 1.984e-7
+/// Known: proven: `proofs/coq/matrix3_inverse_bound.v` proves 3.585e-7
+/// (Coq, on the rounded terms of `proofs/gappa/matrix3_inverse.g`, which
+/// computes the code's bits): the minor and its product with `1 / det`
+/// round three times, and `1 / det` is within `2^-24 + 2.9803e-7` (its
+/// rounding and the determinant's, relative to `T / |D|`) of `1 / D`. A
+/// search (`deep_matrix3_inverse_search` in `proofs/tests/worst_cases.rs`)
+/// finds 1.8827e-7: the bound is 1.9 times that.
+pub const MATRIX3_INVERSE_MAX_REL_ERROR: f32 = 3.6e-7; // 1.8827e-7 (search), 3.585e-7 proven
 /// Error of [`Matrix3::determinant`](crate::Matrix3::determinant)
 /// relative to the sum `T` of the magnitudes of the six products of its
 /// expansion (`|a_x b_y c_z|` and the five others): `|det - exact| <=

@@ -1300,3 +1300,48 @@ fn determinant_of_matrix4_is_matrix4_determinant_g() {
         check(&m, &m.run(&v.map(f64::from)), "det", det, &v);
     }
 }
+
+/// The minor of a cross product's component `i`, `p[j] q[k] - p[k] q[j]`
+/// with `(j, k)` the next two indices, as the model's `f0 g1 - f1 g0`:
+/// `[f0, f1, g0, g1]`.
+fn cross_minor(p: [f32; 3], q: [f32; 3], i: usize) -> [f32; 4] {
+    let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+    [p[j], p[k], q[j], q[k]]
+}
+
+#[test]
+fn inverse_of_matrix3_is_matrix3_inverse_g() {
+    let Some(m) = model("matrix3_inverse", Code::F32) else {
+        return;
+    };
+    assert_eq!(
+        m.inputs,
+        ["a0", "a1", "a2", "b0", "b1", "b2", "c0", "c1", "c2", "f0", "f1", "g0", "g1"]
+    );
+    law_terms_are_the_models("matrix3_inverse_bound", &m);
+    let mut seen = 0;
+    for (_, mut d) in draws() {
+        let v: [f32; 9] = core::array::from_fn(|_| component(&mut d));
+        let Some(inv) = rigtform::Matrix3::from_cols_array(&v).inverse() else {
+            continue;
+        };
+        seen += 1;
+        let col = |c: usize| [v[3 * c], v[3 * c + 1], v[3 * c + 2]];
+        // Row i of the inverse is the cross product of the columns after
+        // column i (b x c, c x a, a x b), times 1 / det.
+        let entries = inv.to_cols_array();
+        for i in 0..3 {
+            let (p, q) = (col((i + 1) % 3), col((i + 2) % 3));
+            for j in 0..3 {
+                let inputs: Vec<f64> = v
+                    .iter()
+                    .chain(&cross_minor(p, q, j))
+                    .map(|&c| f64::from(c))
+                    .collect();
+                let all: Vec<f32> = inputs.iter().map(|&c| c as f32).collect();
+                check(&m, &m.run(&inputs), "e", entries[3 * j + i], &all);
+            }
+        }
+    }
+    assert!(seen > DRAWS / 4, "{seen} invertible draws");
+}

@@ -2,11 +2,12 @@
 //! product's angle (`product_angle_search`) and of the vector sampler's
 //! bound (`vector_sampler_search`): from seeded
 //! starting points, each climbs towards the inputs with the largest error,
-//! changing one or two inputs' bits at a time and keeping a step only if it
-//! makes the error larger, first by up to 4096 units in the last place,
-//! then 64, then 4. The product and the rotation climb on their own error,
+//! changing one input's last bits at a time (`climb`), or one or two
+//! inputs' (`climb_wide`), and keeping a step only if it makes the error
+//! larger. The product's norm and the rotation climb on their own error
 //! over both inputs at once (the quaternions through `normalize`, so that
-//! they stay in the proofs' domain). Errors are measured in f64 from the f32
+//! they stay in the proofs' domain), first by up to 4096 units in the last
+//! place, then 64, then 4. Errors are measured in f64 from the f32
 //! results (squares of f32 values are exact there; the sums round by about
 //! 1e-16, far below the errors sought).
 //!
@@ -41,9 +42,30 @@ fn nudge(d: &mut Draws, c: f32, reach: usize) -> f32 {
     f32::from_bits((c.to_bits() as i32).wrapping_add(k) as u32)
 }
 
-/// Hill climbing from `start`: `steps` nudges of up to `reach` units in
-/// the last place, of one input or two, kept when `error` grows.
+/// Hill climbing from `start`: `steps` nudges of one input each, kept when
+/// `error` grows.
 fn climb<const N: usize>(
+    d: &mut Draws,
+    start: [f32; N],
+    steps: usize,
+    error: &impl Fn([f32; N]) -> f64,
+) -> ([f32; N], f64) {
+    let mut best = (start, error(start));
+    for _ in 0..steps {
+        let mut x = best.0;
+        let i = d.below(N);
+        x[i] = nudge(d, x[i], 4);
+        let e = error(x);
+        if e > best.1 {
+            best = (x, e);
+        }
+    }
+    best
+}
+
+/// Hill climbing as [`climb`], with nudges of up to `reach` units in the
+/// last place, of one input or two at once.
+fn climb_wide<const N: usize>(
     d: &mut Draws,
     start: [f32; N],
     steps: usize,
@@ -65,13 +87,13 @@ fn climb<const N: usize>(
     best
 }
 
-/// [`climb`] from a start uniform in [-1, 1], a third of `steps` each with
+/// [`climb_wide`] from a start uniform in [-1, 1], a third of `steps` each with
 /// reaches 4096, 64 and 4: the largest `error` it ends on.
 fn climb_far<const N: usize>(d: &mut Draws, steps: usize, error: &impl Fn([f32; N]) -> f64) -> f64 {
     let mut x: [f32; N] = core::array::from_fn(|_| d.uniform(-1.0, 1.0));
     let mut e = 0.0;
     for reach in [4096, 64, 4] {
-        (x, e) = climb(d, x, steps / 3, reach, error);
+        (x, e) = climb_wide(d, x, steps / 3, reach, error);
     }
     e
 }
@@ -94,7 +116,7 @@ fn normalized_pool(climbs: usize, seed: u64) -> (Vec<Quat>, f64) {
     let mut found: Vec<(Quat, f64)> = Vec::new();
     for _ in 0..climbs {
         let start: [f32; 4] = core::array::from_fn(|_| d.uniform(-1.0, 1.0));
-        let (x, _) = climb(&mut d, start, 300, 4, &|v| normalize_deviation(v).abs());
+        let (x, _) = climb_wide(&mut d, start, 300, 4, &|v| normalize_deviation(v).abs());
         let q = Quat::from_wxyz(x[0], x[1], x[2], x[3]).normalize();
         found.push((q, norm64(q) - 1.0));
     }
@@ -207,7 +229,7 @@ fn targeted_product_search(d: &mut Draws, starts: usize, restarts: usize, steps:
             });
             let (mut y, mut e) = (start, 0.0);
             for reach in [256, 8] {
-                (y, e) = climb(d, y, steps / 2, reach, &product_deviation);
+                (y, e) = climb_wide(d, y, steps / 2, reach, &product_deviation);
             }
             if e > best.1 {
                 best = (y, e);
@@ -222,7 +244,7 @@ fn targeted_product_search(d: &mut Draws, starts: usize, restarts: usize, steps:
         let start = unit.map(|c| nudge(d, c, 3));
         let (mut y, mut e) = (start, 0.0);
         for reach in [16, 2] {
-            (y, e) = climb(d, y, steps / 2, reach, &product_deviation_raw);
+            (y, e) = climb_wide(d, y, steps / 2, reach, &product_deviation_raw);
         }
         worst = worst.max(e);
     }
@@ -734,6 +756,40 @@ fn polar_search(climbs: usize, seed: u64) -> [f64; 3] {
     worst
 }
 
+/// The largest error of an entry of `Matrix3::inverse`, over the nine,
+/// as `MATRIX3_INVERSE_MAX_REL_ERROR` measures it: `|entry - M / D|`
+/// over `(Am + |M| T / |D|) / |D|`, with `M` the entry's minor, `Am` the
+/// magnitudes of its two products, `D` the determinant and `T` the
+/// magnitudes of its expansion's six products (the minors and `D` in
+/// f64, where a product of two or three f32 is exact or rounds by 2^-53).
+/// 0 outside the constant's domain (`T` above 4096 `|D|`) or where there
+/// is no inverse.
+fn matrix3_inverse_error(v: [f32; 9]) -> f64 {
+    let (det, total) = leibniz(&v, 3);
+    if total > 4096.0 * det.abs() {
+        return 0.0;
+    }
+    let Some(inv) = rigtform::Matrix3::from_cols_array(&v).inverse() else {
+        return 0.0;
+    };
+    let got = inv.to_cols_array();
+    let col = |c: usize| [v[3 * c], v[3 * c + 1], v[3 * c + 2]].map(f64::from);
+    let mut worst = 0f64;
+    // Row i of the inverse: the cross product of the columns after i.
+    for i in 0..3 {
+        let (p, q) = (col((i + 1) % 3), col((i + 2) % 3));
+        for j in 0..3 {
+            let (k, l) = ((j + 1) % 3, (j + 2) % 3);
+            let minor = p[k] * q[l] - p[l] * q[k];
+            let terms = (p[k] * q[l]).abs() + (p[l] * q[k]).abs();
+            let scale = (terms + minor.abs() * total / det.abs()) / det.abs();
+            let error = (f64::from(got[3 * j + i]) - minor / det).abs();
+            worst = worst.max(error / scale);
+        }
+    }
+    worst
+}
+
 /// The polar maps' searches against their constants.
 fn polar_maps_within_their_constants(climbs: usize) {
     use rigtform::accuracy::{POW_MAX_ANGLE_ERROR, TO_SCALED_AXIS_MAX_REL_ERROR};
@@ -758,6 +814,38 @@ fn polar_maps_within_their_constants(climbs: usize) {
     );
 }
 
+/// The largest of `climbs` climbs of `matrix3_inverse_error` from
+/// matrices with entries in [-1, 1], most of them nearly singular (the
+/// last column a combination of the others plus a small part of its own,
+/// so that the expansion cancels by up to the domain's 2^12).
+fn matrix3_inverse_search(climbs: usize, seed: u64) -> f64 {
+    let mut d = Draws::new(seed);
+    let mut worst = 0f64;
+    for k in 0..climbs {
+        let mut start: [f32; 9] = core::array::from_fn(|_| d.uniform(-1.0, 1.0));
+        if k % 4 != 0 {
+            let (p, q) = (d.uniform(-1.0, 1.0), d.uniform(-1.0, 1.0));
+            let own = 2f32.powi(-(d.below(11) as i32));
+            for r in 0..3 {
+                start[6 + r] = p * start[r] + q * start[3 + r] + own * start[6 + r];
+            }
+        }
+        worst = worst.max(climb(&mut d, start, 400, &matrix3_inverse_error).1);
+    }
+    worst
+}
+
+#[test]
+fn matrix3_inverse_found_stays_within_its_constant() {
+    use rigtform::accuracy::MATRIX3_INVERSE_MAX_REL_ERROR;
+    within(
+        "Matrix3::inverse, per entry",
+        matrix3_inverse_search(400, 13),
+        "MATRIX3_INVERSE_MAX_REL_ERROR",
+        MATRIX3_INVERSE_MAX_REL_ERROR,
+    );
+}
+
 #[test]
 fn polar_maps_found_stay_within_their_constants() {
     polar_maps_within_their_constants(300);
@@ -767,4 +855,16 @@ fn polar_maps_found_stay_within_their_constants() {
 #[ignore = "seconds in release: the search the constants' docs quote"]
 fn deep_polar_search() {
     polar_maps_within_their_constants(30_000);
+}
+
+#[test]
+#[ignore = "seconds in release: the search the constant's doc quotes"]
+fn deep_matrix3_inverse_search() {
+    use rigtform::accuracy::MATRIX3_INVERSE_MAX_REL_ERROR;
+    within(
+        "Matrix3::inverse, per entry",
+        matrix3_inverse_search(100_000, 13),
+        "MATRIX3_INVERSE_MAX_REL_ERROR",
+        MATRIX3_INVERSE_MAX_REL_ERROR,
+    );
 }
