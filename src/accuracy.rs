@@ -42,13 +42,13 @@
 //! | [`INVERSE_MAX_REL_ERROR`] | 5.5e-7 |
 //! | [`NORMALIZE_MAX_NORM_ERROR`] | 2.4e-7 |
 //! | [`UNIT_NORM_ERROR`] | 3.5e-7 |
-//! | [`POW_MAX_ANGLE_ERROR`] | 1.03e-6 |
+//! | [`POW_MAX_ANGLE_ERROR`] | 3.4e-7 |
 //! | [`SLERP_MAX_ANGLE_ERROR`] | 5.2e-7 |
 //! | [`ATAN2_MAX_ABS_ERROR`] | 3.2e-7 |
 //! | [`SIN_COS_MAX_ABS_ERROR`] | 6.4e-8 |
 //! | [`TAN_MAX_REL_ERROR`] | 1.2e-7 |
 //! | [`FROM_SCALED_AXIS_MAX_REL_ERROR`] | 3.0e-7 |
-//! | [`TO_SCALED_AXIS_MAX_REL_ERROR`] | 6.7e-7 |
+//! | [`TO_SCALED_AXIS_MAX_REL_ERROR`] | 3.2e-7 |
 //! | [`EXP_LOG_POW_MAX_ANGLE_ERROR`] | 4.5e-7 |
 //! | [`INTEGRATE_STEP_MAX_ANGLE_ERROR`] | 4.0e-7 |
 //! | [`SMOOTHER_DECAY_MAX_ERROR`] | 1.0e-5 |
@@ -77,10 +77,10 @@ mod backend {
     pub const SIN_COS_MAX_ABS_ERROR: f32 = 6.4e-8; // 5.760e-8 at 2.359356 (every f32 of [-10, 10])
     pub const TAN_MAX_REL_ERROR: f32 = 1.2e-7; // 7.745e-8 at 0.12439033 (every f32 of [0.0087, 1.5621])
     pub const UNIT_NORM_ERROR: f32 = 3.5e-7; // 2.572e-7 (slerp, random pairs); 1.9720e-7 (a product, relative to |a| |b|, by search; 2.84e-7 proven)
-    pub const POW_MAX_ANGLE_ERROR: f32 = 1.03e-6; // 2.580e-7 (pow), 2.725e-7 (to_axis_angle), 2.968e-7 (pow, search), 1.03e-6 proven
+    pub const POW_MAX_ANGLE_ERROR: f32 = 3.4e-7; // 2.580e-7 (pow), 2.725e-7 (to_axis_angle), 2.968e-7 (pow, search); 1.03e-6 proven given swept kernels
     pub const SLERP_MAX_ANGLE_ERROR: f32 = 5.2e-7; // 4.106e-7 (random pairs, alpha in [-1, 2])
     pub const FROM_SCALED_AXIS_MAX_REL_ERROR: f32 = 3.0e-7; // 2.426e-7
-    pub const TO_SCALED_AXIS_MAX_REL_ERROR: f32 = 6.7e-7; // 2.624e-7 (f32 kernels; 2.495e-7 with libm), 2.612e-7 (search), 6.6912e-7 proven
+    pub const TO_SCALED_AXIS_MAX_REL_ERROR: f32 = 3.2e-7; // 2.624e-7 (f32 kernels; 2.495e-7 with libm), 2.612e-7 (search); 6.6912e-7 proven given the swept atan2 kernel
     pub const EXP_LOG_POW_MAX_ANGLE_ERROR: f32 = 4.5e-7; // 3.250e-7 (f32 kernels; 3.612e-7 with libm)
     pub const INTEGRATE_STEP_MAX_ANGLE_ERROR: f32 = 4.0e-7; // 3.206e-7
     pub const SMOOTHER_DECAY_MAX_ERROR: f32 = 1.0e-5; // 7.480e-6 (100 Hz and 1 kHz, 2 s)
@@ -336,16 +336,13 @@ pub const ROTATE_MAX_REL_ERROR: f32 = 6.5e-7; // 6.5e-7 proven; 4.7482e-7 (by se
 /// error of the angle returned by `to_axis_angle` (at most pi), per
 /// `max(1, theta)`.
 ///
-/// Known: proven, given the atan2 and the sine and cosine kernels' swept
-/// bounds: `proofs/gappa/polar_angle.g` proves 1.03e-6 for `pow` and
-/// 3.7016e-7 per radian for `to_axis_angle`, taking as hypotheses
-/// [`ATAN2_MAX_ULP`] and [`SIN_COS_MAX_ABS_ERROR`] (swept, not proven)
-/// and the length's rounding that `normalize.g` proves; the last step,
-/// from the model's goals to the rotation's angle, is on paper in the
-/// model. A search (`deep_polar_search` in `proofs/tests/worst_cases.rs`)
-/// finds 2.968e-7 for `pow`: the bound is 3.5 times that (each
-/// hypothesis at its worst at once, the atan2 kernel's ulps at the bottom
-/// of their binade).
+/// Known: measured: the largest error over the draws in its doc, rounded
+/// up; a search (`deep_polar_search` in `proofs/tests/worst_cases.rs`)
+/// finds 2.968e-7 for `pow`. `proofs/gappa/polar_angle.g` proves a looser
+/// 1.03e-6 for `pow` and 3.7016e-7 per radian for `to_axis_angle`, given
+/// [`ATAN2_MAX_ULP`] and [`SIN_COS_MAX_ABS_ERROR`] (swept, not proven) and
+/// the length's rounding that `normalize.g` proves, with the last step,
+/// from the model's goals to the rotation's angle, on paper in the model.
 pub const POW_MAX_ANGLE_ERROR: f32 = backend::POW_MAX_ANGLE_ERROR;
 /// Angle error of [`Quat::from_euler`](crate::Quat::from_euler) for angles
 /// in [-pi, pi], and of the rotation (evaluated exactly) of the angles that
@@ -368,12 +365,11 @@ pub const FROM_SCALED_AXIS_MAX_REL_ERROR: f32 = backend::FROM_SCALED_AXIS_MAX_RE
 /// result's components are near or below f32's normal range and round
 /// absolutely (6.4e-6 relative at 3.1e-40 rad).
 ///
-/// Known: proven, given the atan2 kernel's swept bound:
-/// `proofs/gappa/polar_angle.g` proves 6.6912e-7 (each component within
-/// it, relative), taking [`ATAN2_MAX_ULP`] (swept, not proven) and the
-/// length's rounding that `normalize.g` proves as hypotheses. A search
-/// (`deep_polar_search` in `proofs/tests/worst_cases.rs`) finds 2.612e-7,
-/// random draws 2.624e-7: the bound is 2.6 times that.
+/// Known: measured: the largest error over the draws in its doc, rounded
+/// up; a search (`deep_polar_search` in `proofs/tests/worst_cases.rs`)
+/// finds 2.612e-7. `proofs/gappa/polar_angle.g` proves a looser 6.6912e-7
+/// (each component, relative), given [`ATAN2_MAX_ULP`] (swept, not
+/// proven) and the length's rounding that `normalize.g` proves.
 pub const TO_SCALED_AXIS_MAX_REL_ERROR: f32 = backend::TO_SCALED_AXIS_MAX_REL_ERROR;
 /// Angle between `Quat::from_scaled_axis(a * q.to_scaled_axis())` and
 /// `q.pow(a)`, in the form of [`POW_MAX_ANGLE_ERROR`]: at most

@@ -79,9 +79,9 @@
 # bottom of its binade, and the roundings of the axis across the result
 # in full.
 #
-#! bound POW_MAX_ANGLE_ERROR Turn in [0, 1.03e-6] angle error of q.pow(alpha) per max(1, |alpha| theta), given the atan2 and sine and cosine kernels' swept bounds
-#! bound POW_MAX_ANGLE_ERROR |Eph| in [0, 3.7016e-7] relative error of the angle of to_axis_angle, given the atan2 kernel's swept bound
-#! bound TO_SCALED_AXIS_MAX_REL_ERROR (vx - Vx) / Vx in [-6.6912e-7, 6.6912e-7] to_scaled_axis relative to the angle, given the atan2 kernel's swept bound
+#! looser POW_MAX_ANGLE_ERROR Turn in [0, 1.03e-6] angle error of q.pow(alpha) per max(1, |alpha| theta), given the atan2 and sine and cosine kernels' swept bounds
+#! looser POW_MAX_ANGLE_ERROR |Eph| in [0, 3.7016e-7] relative error of the angle of to_axis_angle, given the atan2 kernel's swept bound
+#! looser TO_SCALED_AXIS_MAX_REL_ERROR (vx - Vx) / Vx in [-6.6912e-7, 6.6912e-7] to_scaled_axis relative to the angle, given the atan2 kernel's swept bound
 @rnd = float<ieee_32, ne>;
 
 x = rnd(X);
