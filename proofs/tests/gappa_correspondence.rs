@@ -712,19 +712,15 @@ fn rig_tform_inverse_identities_are_rigtform_inv_g() {
     }
 }
 
-/// pow_norm.g where `scale_for_squares` leaves the vector part as it is
-/// (its sum of squares in [2^-100, f32::MAX]; the other branches are
-/// normalize_scale.g's) and `|alpha| <= f32::MAX / 4`. The model takes the
-/// kernel's sine and cosine as inputs; the glue that makes them (the angle
-/// `atan2(beta, w)`, the f32 product `alpha phi`, `sin_cos`) is pow's,
-/// written out here with the library's kernels, and the result's bits are
-/// the library's `pow`.
-#[test]
-fn power_is_pow_norm_g() {
-    let Some(m) = model("pow_norm", Code::F32) else {
-        return;
-    };
-    assert_eq!(m.inputs, ["x", "y", "z", "s", "c"]);
+/// The draws of `pow`'s correspondence tests: a quaternion (unit, or
+/// with mixed components) and `alpha`, kept where `scale_for_squares`
+/// leaves the vector part as it is (its sum of squares, the model's `q`
+/// with the first three of `width` inputs set, in [2^-100, f32::MAX]; the
+/// other branches are normalize_scale.g's) and `|alpha| <= f32::MAX / 4`.
+/// `each` gets `q`, `alpha` and what pow's glue makes of them with the
+/// library's kernels: the angle `phi = atan2(beta, w)` and the sine and
+/// cosine of the f32 product `alpha phi`. Most draws must be kept.
+fn pow_cases(m: &Model, width: usize, mut each: impl FnMut(Quat, f32, f32, f32, f32)) {
     let mut kept = 0;
     for (i, mut d) in draws() {
         let q = if i % 2 == 0 {
@@ -740,7 +736,8 @@ fn power_is_pow_norm_g() {
         if !(q.is_finite() && alpha.is_finite()) || alpha.abs() > f32::MAX / 4.0 {
             continue;
         }
-        let inputs = [q.x, q.y, q.z, 0.0, 0.0].map(f64::from);
+        let mut inputs = vec![0.0; width];
+        inputs[..3].copy_from_slice(&[q.x, q.y, q.z].map(f64::from));
         let beta_sq = m.run(&inputs)["q"];
         if !(2f64.powi(-100)..=f64::from(f32::MAX)).contains(&beta_sq) {
             continue;
@@ -748,13 +745,7 @@ fn power_is_pow_norm_g() {
         let beta = kani_kernels::sqrt(beta_sq as f32);
         let phi = kani_kernels::atan2(beta, q.w * 1.0);
         let (s, c) = kani_kernels::sin_cos(alpha * phi);
-        let v = [q.x, q.y, q.z, s, c];
-        let out = m.run(&v.map(f64::from));
-        let p = q.pow(alpha);
-        assert_eq!(p.w.to_bits(), c.to_bits(), "pow_norm: w for {q:?}, {alpha}");
-        for (name, code) in [("rx", p.x), ("ry", p.y), ("rz", p.z)] {
-            check(&m, &out, name, code, &v);
-        }
+        each(q, alpha, phi, s, c);
         kept += 1;
     }
     assert!(
@@ -763,39 +754,36 @@ fn power_is_pow_norm_g() {
     );
 }
 
-/// polar_angle.g: `pow`'s vector part, `to_scaled_axis` and the angle of
-/// `to_axis_angle` (x's component; y and z are the same operations), in
-/// the branch of scale_for_squares without rescaling, with `ph`, `s` and
-/// `c` the library's kernels on the arguments the code hands them.
+/// pow_norm.g, on [`pow_cases`]. The model takes the kernel's sine and
+/// cosine as inputs; the result's bits are the library's `pow`.
+#[test]
+fn power_is_pow_norm_g() {
+    let Some(m) = model("pow_norm", Code::F32) else {
+        return;
+    };
+    assert_eq!(m.inputs, ["x", "y", "z", "s", "c"]);
+    pow_cases(&m, 5, |q, alpha, _, s, c| {
+        let v = [q.x, q.y, q.z, s, c];
+        let out = m.run(&v.map(f64::from));
+        let p = q.pow(alpha);
+        assert_eq!(p.w.to_bits(), c.to_bits(), "pow_norm: w for {q:?}, {alpha}");
+        for (name, code) in [("rx", p.x), ("ry", p.y), ("rz", p.z)] {
+            check(&m, &out, name, code, &v);
+        }
+    });
+}
+
+/// polar_angle.g, on [`pow_cases`]: `pow`'s vector part, `to_scaled_axis`
+/// and the angle of `to_axis_angle` (x's component; y and z are the same
+/// operations), with `ph`, `s` and `c` the library's kernels on the
+/// arguments the code hands them.
 #[test]
 fn polar_maps_are_polar_angle_g() {
     let Some(m) = model("polar_angle", Code::F32) else {
         return;
     };
     assert_eq!(m.inputs, ["x", "y", "z", "ph", "al", "s", "c"]);
-    let mut kept = 0;
-    for (i, mut d) in draws() {
-        let q = if i % 2 == 0 {
-            d.unit_quat()
-        } else {
-            quat(core::array::from_fn(|_| component(&mut d)))
-        };
-        let alpha = match i % 5 {
-            0 => d.f32_mixed(),
-            1 => d.uniform(-1e6, 1e6),
-            _ => d.uniform(-4.0, 4.0),
-        };
-        if !(q.is_finite() && alpha.is_finite()) || alpha.abs() > f32::MAX / 4.0 {
-            continue;
-        }
-        let inputs = [q.x, q.y, q.z, 0.0, 0.0, 0.0, 0.0].map(f64::from);
-        let beta_sq = m.run(&inputs)["q"];
-        if !(2f64.powi(-100)..=f64::from(f32::MAX)).contains(&beta_sq) {
-            continue;
-        }
-        let beta = kani_kernels::sqrt(beta_sq as f32);
-        let phi = kani_kernels::atan2(beta, q.w * 1.0);
-        let (s, c) = kani_kernels::sin_cos(alpha * phi);
+    pow_cases(&m, 7, |q, alpha, phi, s, c| {
         let v = [q.x, q.y, q.z, phi, alpha, s, c];
         let out = m.run(&v.map(f64::from));
         let p = q.pow(alpha);
@@ -810,12 +798,7 @@ fn polar_maps_are_polar_angle_g() {
         if q.w >= 0.0 {
             check(&m, &out, "t", q.to_axis_angle().1, &v);
         }
-        kept += 1;
-    }
-    assert!(
-        kept > DRAWS / 2,
-        "{kept} of {DRAWS} draws in the model's branch"
-    );
+    });
 }
 
 /// cos_poly.g: the kernel's cosine for every argument in [0, pi/4], where
