@@ -711,7 +711,7 @@ fn polar_errors(v: [f32; 5]) -> [f64; 3] {
     let alpha = v[4];
     let unit =
         (norm64(q).powi(2) - 1.0).abs() <= 2f64.powi(-20) && q64(q).iter().all(|c| c.abs() <= 1.0);
-    if !unit || !(alpha.abs() <= 1000.0) || (q.x, q.y, q.z) == (0.0, 0.0, 0.0) {
+    if !unit || alpha.is_nan() || alpha.abs() > 1000.0 || (q.x, q.y, q.z) == (0.0, 0.0, 0.0) {
         return [0.0; 3];
     }
     let (phi, k) = polar64(q);
