@@ -1,6 +1,7 @@
 //! Searches for the worst cases of the norm and rotation laws, of the
-//! product's angle (`product_angle_search`) and of the vector sampler's
-//! bound (`vector_sampler_search`): from seeded
+//! product's angle (`product_angle_search`), of the vector sampler's
+//! bound (`vector_sampler_search`) and of `RigTForm`'s inverse identities
+//! (`rigid_inverse_search`): from seeded
 //! starting points, each climbs towards the inputs with the largest error,
 //! changing one input's last bits at a time (`climb`), or one or two
 //! inputs' (`climb_wide`), and keeping a step only if it makes the error
@@ -23,7 +24,7 @@ use rigtform::accuracy::{
     MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, ROTATE_MAX_REL_ERROR,
     SAMPLER_VEC3_MAX_REL_ERROR, UNIT_NORM_ERROR,
 };
-use rigtform::{Cvec3, Quat};
+use rigtform::{Cvec3, Quat, RigTForm};
 use rigtform_proofs::draw::Draws;
 
 /// The four components in f64, w first.
@@ -867,4 +868,123 @@ fn deep_matrix3_inverse_search() {
         "MATRIX3_INVERSE_MAX_REL_ERROR",
         MATRIX3_INVERSE_MAX_REL_ERROR,
     );
+}
+
+/// The errors of the inverse identities of `RigTForm`, relative to `|t|`:
+/// the translation of `a * a.inv()` (exactly 0 for exact arithmetic and a
+/// unit `r`) and `a.inv().inv().t - t`, for `a = (t, r)` with `r` the
+/// result of `normalize` on the first four inputs and `t` the last three
+/// (both 0 where `r` is not finite or `t` is 0). Every translation is an
+/// f32 result, measured in f64.
+fn rigid_inverse_errors(x: [f32; 7]) -> [f64; 2] {
+    let r = Quat::from_wxyz(x[0], x[1], x[2], x[3]).normalize();
+    let t = Cvec3::new(x[4], x[5], x[6]);
+    if !r.is_finite() || t.norm() == 0.0 {
+        return [0.0; 2];
+    }
+    let a = RigTForm::new(t, r);
+    let t64 = [t.x, t.y, t.z].map(f64::from);
+    let len = |v: [f64; 3]| v.iter().map(|c| c * c).sum::<f64>().sqrt();
+    let product = (a * a.inv()).t;
+    let back = a.inv().inv().t;
+    let back = [back.x, back.y, back.z].map(f64::from);
+    [
+        len([product.x, product.y, product.z].map(f64::from)) / len(t64),
+        len(core::array::from_fn(|i| back[i] - t64[i])) / len(t64),
+    ]
+}
+
+/// The bound the inverse identities compose from the constants, relative
+/// to `|t|`, for `r` a result of `normalize` (`|r|^2 = 1 + delta`): the
+/// first rotation's error `e |t|`, turned by the exact formula (which
+/// lengthens by at most `1 + 2 |delta|`), the second rotation's error
+/// `e |r^-1 t|`, and the exact formulas' own departure from `t`,
+/// `F_r(F_{r^-1}(t)) - t = -4 delta k x (k x t)` (`k` the vector part of
+/// `r`), at most `4 |delta| |r|^2 |t|`; the product's last sum rounds
+/// once more.
+fn rigid_inverse_bound() -> [f64; 2] {
+    let n = f64::from(NORMALIZE_MAX_NORM_ERROR);
+    let e = f64::from(ROTATE_MAX_REL_ERROR);
+    let delta = (1.0 + n).powi(2) - 1.0;
+    let back = e * (1.0 + 2.0 * delta + e) + (1.0 + 2.0 * delta) * e + 4.0 * delta * (1.0 + delta);
+    [back * (1.0 + 2f64.powi(-24)), back]
+}
+
+/// The worst cases of [`rigid_inverse_errors`]: `draws` uniform rotations
+/// and translations first; then `climbs` climbs of `normalize`'s norm error
+/// from rotations near half a turn (`w` within 0.02 of 0, where
+/// `2 t - R t - R^-1 t` is largest: `4 t` for `t` across the axis), and
+/// from the `pair` with the largest norm errors, with `t` across the axis,
+/// climbs of `steps` steps over the rotation's and the translation's
+/// inputs on each error. Returns the largest errors of the draws and of
+/// the search.
+fn rigid_inverse_search(
+    draws: usize,
+    climbs: usize,
+    pair: usize,
+    steps: usize,
+    seed: u64,
+) -> ([f64; 2], [f64; 2]) {
+    let mut d = Draws::new(seed);
+    let mut random = [0f64; 2];
+    for _ in 0..draws {
+        let (r, t) = (d.unit_quat(), d.vec3(1.0));
+        let e = rigid_inverse_errors([r.w, r.x, r.y, r.z, t.x, t.y, t.z]);
+        random = [0, 1].map(|i| random[i].max(e[i]));
+    }
+    let mut pool: Vec<([f32; 4], f64)> = (0..climbs)
+        .map(|_| {
+            let start = [
+                d.uniform(-0.02, 0.02),
+                d.uniform(-1.0, 1.0),
+                d.uniform(-1.0, 1.0),
+                d.uniform(-1.0, 1.0),
+            ];
+            climb_wide(&mut d, start, 300, 4, &|v| normalize_deviation(v).abs())
+        })
+        .collect();
+    pool.sort_by(|a, b| b.1.total_cmp(&a.1));
+    let mut found = [0f64; 2];
+    for (q, _) in pool.iter().take(pair) {
+        let axis = Cvec3::new(q[1], q[2], q[3]);
+        let t = axis.cross(d.vec3(1.0));
+        let start = [q[0], q[1], q[2], q[3], t.x, t.y, t.z];
+        for (i, f) in found.iter_mut().enumerate() {
+            let (_, e) = climb(&mut d, start, steps, &|x| rigid_inverse_errors(x)[i]);
+            *f = f.max(e);
+        }
+    }
+    (random, found)
+}
+
+/// Prints what the draws and the search find beside the composed bound,
+/// and fails if either exceeds it.
+fn rigid_inverse_within(draws: usize, climbs: usize, pair: usize, steps: usize) {
+    let (random, found) = rigid_inverse_search(draws, climbs, pair, steps, 17);
+    let bound = rigid_inverse_bound();
+    for (i, what) in ["|(a * a.inv()).t| / |t|", "|a.inv().inv().t - t| / |t|"]
+        .iter()
+        .enumerate()
+    {
+        println!(
+            "{what}, r a result of normalize: {:.4e} ({draws} draws), {:.4e} (search) (composed: {:.4e})",
+            random[i], found[i], bound[i]
+        );
+        assert!(
+            random[i].max(found[i]) <= bound[i],
+            "{what}: {:e}",
+            found[i]
+        );
+    }
+}
+
+#[test]
+fn rigid_inverse_identities_found_stay_within_the_composed_bound() {
+    rigid_inverse_within(20_000, 2_000, 50, 400);
+}
+
+#[test]
+#[ignore = "seconds in release: the search the laws' docs quote"]
+fn deep_rigid_inverse_search() {
+    rigid_inverse_within(1_000_000, 100_000, 1_000, 2_000);
 }
