@@ -323,9 +323,9 @@ pub const MUL_MAX_ANGLE_ERROR: f32 = 1.2e-6; // 2.988e-7 (random), 3.324e-7 (sea
 /// rounding of a unit quaternion (`|e|` below 1.2e-7) the error against `R`
 /// measured 4.710e-7.
 ///
-/// Known: proven: `proofs/coq/rotate_error.v` proves 6.5e-7 (Coq, on the
-/// certificate of `proofs/gappa/rotate.g`, for `|q|^2` within 2^-20 of 1
-/// and components in [-1, 1]). A search found 4.7482e-7
+/// Known: proven: `proofs/coq/rotate_error.v` proves 6.5e-7 (Coq, on
+/// Flocq's rounding, for `|q|^2` within 2^-20 of 1; the model is
+/// `proofs/gappa/rotate.g`). A search found 4.7482e-7
 /// (`proofs/tests/worst_cases.rs`, with `q` a result of `normalize`).
 pub const ROTATE_MAX_REL_ERROR: f32 = 6.5e-7; // 6.5e-7 proven; 4.7482e-7 (by search)
 /// Angle error of `q.pow(alpha)` for unit `q`, per radian of the rotation

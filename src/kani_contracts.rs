@@ -36,8 +36,8 @@ pub const MUL_NORM_PROVEN: f64 = 2.84e-7;
 /// The length of the error vector of `q * v` against the exact value of
 /// the same formula, relative to `|v|`, for `q` with components in
 /// [-1, 1] and `|q|^2` within 2^-20 of 1, and `v` with components in
-/// [-1, 1] and `|v| >= 1/2`: `proofs/coq/rotate_error.v`, on the
-/// certificate of `proofs/gappa/rotate.g`.
+/// [-1, 1] and `|v| >= 1/2`: `proofs/coq/rotate_error.v`, on the terms of
+/// `proofs/gappa/rotate.g`.
 pub const ROTATE_ERROR_PROVEN: f64 = 6.5e-7;
 
 /// How far from 1 the norm of a quaternion that the contracts call unit

@@ -1,14 +1,14 @@
 (* The rotation of a vector, q * v (src/quat/ops.rs, Mul<Cvec3> for Quat):
    t = (u x v) * 2, then (v + t w) + u x t, with u = (x, y, z) the vector
-   part of q, for q with |q|^2 within 2^-20 of 1 and components in
-   [-1, 1] (every result of normalize, whose norm normalize_norm.v bounds
-   within 2.391e-7 of 1) and v with |v|^2 in [1/4, 1] (every non-zero v
-   after an exact power-of-two scaling, as in rotate.g): the error vector
-   against the exact value of the same formula is at most 6.5e-7 |v| long.
+   part of q, for q with |q|^2 within 2^-20 of 1 (every result of
+   normalize, whose norm normalize_norm.v bounds within 2.391e-7 of 1) and
+   v with |v|^2 in [1/4, 1] (every non-zero v after an exact power-of-two
+   scaling, as in rotate.g): the error vector against the exact value of
+   the same formula is at most 6.5e-7 |v| long. rotate_main, on which the
+   law rests, holds for every v with |v|^2 at least 1/9, so that a vector
+   an earlier rotation computed (rigtform_inverse.v) needs no rescaling.
 
-   Certificate: rotate.g (Gappa), the same error within 3.8e-6 |v|, which
-   bounds interval by interval and so adds the bounds of the parts where
-   the vectors are orthogonal. Proven here, with vectors: the error is the
+   Proven here with vectors, on Flocq's rounding alone: the error is the
    sum of five vectors, each bounded by its length (triangle inequality):
    - the error of t (the first cross product's roundings, at most
      (1 + sqrt(4/3)) 2^-24 |u| |v| for u x v; the doubling is exact),
@@ -18,19 +18,20 @@
      orthogonal: |v + T w|^2 = |v|^2 + w^2 |T|^2;
    - the second cross product's roundings, at most
      (1 + sqrt(4/3)) 2^-24 |u| |t|;
-   - the last sums' roundings, at most 2^-24 times the result's length,
-     which the certificate bounds (within 3.8e-6 |v| of |F(v)|, and |F(v)|
-     within 4e-6 of |v| by the identity |F(v)|^2 = |v|^2 (1 + 4 |u|^2
-     (|q|^2 - 1)) + 4 (u . v)^2 (1 - |q|^2)).
+   - the last sums' roundings, at most 2^-24 times the length of the sum
+     they round, which is F(v) plus the four errors above (so within
+     6.5e-7 |v| of |F(v)|, and |F(v)| within 4e-6 of |v| by the identity
+     |F(v)|^2 = |v|^2 (1 + 4 |u|^2 (|q|^2 - 1)) + 4 (u . v)^2 (1 - |q|^2)).
    With s = |u| and c = |w| (s^2 + c^2 = |q|^2) the sum is at most
    (4.31 s + 2 c s + (1 + 2 c^2 s^2) + 4.31 s^2 + 1) 2^-24 |v| to first
-   order, largest (10.83 2^-24) near s = 0.98 (rotate_scalar). *)
+   order, largest (10.83 2^-24) near s = 0.98 (rotate_scalar). The
+   certificate of rotate.g (Gappa, 3.8e-6 |v| by intervals) is not
+   needed. *)
 (*! bound ROTATE_MAX_REL_ERROR rotate_error <= 6.5e-7 |q*v - F(v)| / |v|, F the exact formula, q within 2^-20 of unit norm *)
 Require Import Reals Psatz.
 Require Import Flocq.Core.Core.
 Require Import Gappa.Gappa_library.
 Require Import Laws.Common.
-Require Laws.rotate.
 
 Open Scope R_scope.
 
@@ -50,8 +51,8 @@ Proof.
   nra.
 Qed.
 
-(* Half of nv at least: a small absolute term is a multiple of nv. *)
-Lemma half_le : forall nv k, / 2 <= nv -> 0 <= k -> k <= nv * (2 * k).
+(* A third of nv at least: a small absolute term is a multiple of nv. *)
+Lemma third_le : forall nv k, / 3 <= nv -> 0 <= k -> k <= nv * (3 * k).
 Proof. intros; nra. Qed.
 
 (* The five lengths added, each bounded through the ones before it: a the
@@ -60,7 +61,7 @@ Proof. intros; nra. Qed.
    turned, Nrho the last sums', Nr the result's length. *)
 Lemma rotate_combine : forall u0 k e s c nv a NT Nmu Nsig Ngam NL Nrho Nr,
   u0 = / 16777216 -> 0 <= e <= / 2 ^ 140 -> 0 <= k <= 2.15481 * u0 ->
-  0 <= s -> 0 <= c -> s * s + c * c <= 1 + / 1048576 -> / 2 <= nv <= 1 ->
+  0 <= s -> 0 <= c -> s * s + c * c <= 1 + / 1048576 -> / 3 <= nv ->
   0 <= a <= k * (s * nv) + 8 * e ->
   NT <= 2 * (s * nv) + 2 * a ->
   Nmu <= u0 * c * NT + 2 * e ->
@@ -76,9 +77,9 @@ Proof.
   assert (Hc1 : c <= 1.001) by nra.
   assert (Hcs : 0 <= c * s <= 1.001) by (split; nra).
   (* a / nv <= al, a small constant times... *)
-  set (al := k * s + 16 * e).
+  set (al := k * s + 24 * e).
   assert (Hal : a <= nv * al).
-  { unfold al. assert (8 * e <= nv * (16 * e)) by nra. nra. }
+  { unfold al. assert (8 * e <= nv * (24 * e)) by nra. nra. }
   assert (Hks : k * s <= 2.15481 * u0 * s) by (apply Rmult_le_compat_r; lra).
   assert (Hal1 : al <= 2.1572 * u0).
   { unfold al. assert (2.15481 * u0 * s <= 2.15481 * u0 * 1.001) by (apply Rmult_le_compat_l; lra).
@@ -92,32 +93,32 @@ Proof.
     rewrite Hu in *. lra. }
 
   (* The terms, each nv times a factor. *)
-  assert (Hmu2 : Nmu <= nv * (2 * u0 * (c * s) + 2 * 1.001 * u0 * (2.1572 * u0) + 4 * e)).
+  assert (Hmu2 : Nmu <= nv * (2 * u0 * (c * s) + 2 * 1.001 * u0 * (2.1572 * u0) + 6 * e)).
   { assert (u0 * c * NT <= u0 * c * (nv * (2 * s + 2 * al))) by (apply Rmult_le_compat_l; nra).
     assert (u0 * c * al <= u0 * 1.001 * (2.1572 * u0)).
     { apply Rmult_le_compat; [apply Rmult_le_pos; lra|unfold al; apply Rplus_le_le_0_compat; [apply Rmult_le_pos|]; lra|
         apply Rmult_le_compat_l; lra|lra]. }
-    assert (2 * e <= nv * (2 * (2 * e))) by (apply half_le; lra).
+    assert (2 * e <= nv * (3 * (2 * e))) by (apply third_le; lra).
     assert (nv * (u0 * c * al) <= nv * (u0 * 1.001 * (2.1572 * u0))) by (apply Rmult_le_compat_l; lra).
     nra. }
-  assert (Hmu3 : Nmu <= nv * (2 * u0 * 1.001 + 2 * 1.001 * u0 * (2.1572 * u0) + 4 * e)).
+  assert (Hmu3 : Nmu <= nv * (2 * u0 * 1.001 + 2 * 1.001 * u0 * (2.1572 * u0) + 6 * e)).
   { assert (nv * (2 * u0 * (c * s)) <= nv * (2 * u0 * 1.001)).
     { apply Rmult_le_compat_l; [lra|]. apply Rmult_le_compat_l; lra. }
     lra. }
   assert (Hsig2 : Nsig <= nv * (u0 * (1 + 2 * (c * s) * (c * s))
-                   + u0 * (2 * u0 * 1.001 + 2 * 1.001 * u0 * (2.1572 * u0) + 4 * e + 2 * 1.001 * (2.1572 * u0)) + 4 * e)).
+                   + u0 * (2 * u0 * 1.001 + 2 * 1.001 * u0 * (2.1572 * u0) + 6 * e + 2 * 1.001 * (2.1572 * u0)) + 6 * e)).
   { assert (c * a <= 1.001 * (nv * (2.1572 * u0))) by (apply Rmult_le_compat; nra).
-    assert (2 * e <= nv * (2 * (2 * e))) by (apply half_le; lra).
-    assert (u0 * (Nmu + 2 * c * a) <= u0 * (nv * (2 * u0 * 1.001 + 2 * 1.001 * u0 * (2.1572 * u0) + 4 * e) + 2 * (1.001 * (nv * (2.1572 * u0)))))
+    assert (2 * e <= nv * (3 * (2 * e))) by (apply third_le; lra).
+    assert (u0 * (Nmu + 2 * c * a) <= u0 * (nv * (2 * u0 * 1.001 + 2 * 1.001 * u0 * (2.1572 * u0) + 6 * e) + 2 * (1.001 * (nv * (2.1572 * u0)))))
       by (apply Rmult_le_compat_l; lra).
     nra. }
-  assert (Hgam2 : Ngam <= nv * (k * (2 * (s * s)) + 2 * 1.001 * (2.15481 * u0) * (2.1572 * u0) + 16 * e)).
+  assert (Hgam2 : Ngam <= nv * (k * (2 * (s * s)) + 2 * 1.001 * (2.15481 * u0) * (2.1572 * u0) + 24 * e)).
   { assert (k * (s * NT) <= k * (s * (nv * (2 * s + 2 * al)))) by (apply Rmult_le_compat_l; [lra|]; apply Rmult_le_compat_l; lra).
     assert (k * s * al <= 2.15481 * u0 * 1.001 * (2.1572 * u0)).
     { apply Rmult_le_compat; [apply Rmult_le_pos; lra|unfold al; apply Rplus_le_le_0_compat; [apply Rmult_le_pos|]; lra| |lra].
       assert (2.15481 * u0 * s <= 2.15481 * u0 * 1.001) by (apply Rmult_le_compat_l; lra). lra. }
     assert (nv * (k * s * al) <= nv * (2.15481 * u0 * 1.001 * (2.1572 * u0))) by (apply Rmult_le_compat_l; lra).
-    assert (8 * e <= nv * (2 * (8 * e))) by (apply half_le; lra).
+    assert (8 * e <= nv * (3 * (8 * e))) by (apply third_le; lra).
     nra. }
   assert (HL2 : NL <= nv * ((1 + / 1048576) * 2 * al)) by nra.
   assert (Hrho2 : Nrho * (1 - u0) <= u0 * (1 + 1e-5) * nv + 2 * e).
@@ -127,9 +128,9 @@ Proof.
   pose proof (rotate_scalar s c Hs Hc Hq) as Sc.
   assert (K2 : k * (s * s) <= 2.15481 * u0 * (s * s)) by (apply Rmult_le_compat_r; nra).
   set (B := 1.0000101 * u0
-    + (u0 * (1 + 2 * (c * s) * (c * s)) + u0 * (2 * u0 * 1.001 + 2 * 1.001 * u0 * (2.1572 * u0) + 4 * e + 2 * 1.001 * (2.1572 * u0)) + 4 * e)
-    + (2 * u0 * (c * s) + 2 * 1.001 * u0 * (2.1572 * u0) + 4 * e)
-    + (k * (2 * (s * s)) + 2 * 1.001 * (2.15481 * u0) * (2.1572 * u0) + 16 * e)
+    + (u0 * (1 + 2 * (c * s) * (c * s)) + u0 * (2 * u0 * 1.001 + 2 * 1.001 * u0 * (2.1572 * u0) + 6 * e + 2 * 1.001 * (2.1572 * u0)) + 6 * e)
+    + (2 * u0 * (c * s) + 2 * 1.001 * u0 * (2.1572 * u0) + 6 * e)
+    + (k * (2 * (s * s)) + 2 * 1.001 * (2.15481 * u0) * (2.1572 * u0) + 24 * e)
     + (1 + / 1048576) * 2 * al).
   assert (HB : B <= 6.5e-7).
   { assert (0 <= s * s) by nra. assert (0 <= c * s) by nra.
@@ -215,12 +216,14 @@ Qed.
 (* A cross product's rounding, relative to |p| |q| (cross_err). *)
 Definition kap := u * (1 + u) * 1.1548 + u.
 
-(* The error against the formula, given a bound Nr on the length of the
-   computed result, split into the five vectors above. *)
+(* The error against the formula, split into the five vectors above, for
+   any v with |v|^2 at least 1/9 (the exact power-of-two scalings of v
+   overlap, so a v computed by an earlier step needs no rescaling). The
+   last sums round the sum before them, within F(v) and the four other
+   errors, so at most (1 + 1e-5) |v| long. *)
 Lemma rotate_main : forall w x y z vx vy vz : R,
   1 - / 1048576 <= w * w + x * x + y * y + z * z <= 1 + / 1048576 ->
-  / 4 <= vx * vx + vy * vy + vz * vz <= 1 ->
-  forall Nr : R, Nr <= (1 + 1e-5) * n3 vx vy vz ->
+  / 9 <= vx * vx + vy * vy + vz * vz ->
   let tx := rnd (rnd (rnd (y * vz) - rnd (z * vy)) * 2) in
   let ty := rnd (rnd (rnd (z * vx) - rnd (x * vz)) * 2) in
   let tz := rnd (rnd (rnd (x * vy) - rnd (y * vx)) * 2) in
@@ -230,7 +233,6 @@ Lemma rotate_main : forall w x y z vx vy vz : R,
   let gx := rnd (rnd (y * tz) - rnd (z * ty)) in
   let gy := rnd (rnd (z * tx) - rnd (x * tz)) in
   let gz := rnd (rnd (x * ty) - rnd (y * tx)) in
-  n3 (rnd (sx + gx)) (rnd (sy + gy)) (rnd (sz + gz)) <= Nr ->
   let Tx := (y * vz - z * vy) * 2 in
   let Ty := (z * vx - x * vz) * 2 in
   let Tz := (x * vy - y * vx) * 2 in
@@ -238,14 +240,14 @@ Lemma rotate_main : forall w x y z vx vy vz : R,
      (rnd (sy + gy) - (vy + Ty * w + (z * Tx - x * Tz)))
      (rnd (sz + gz) - (vz + Tz * w + (x * Ty - y * Tx))) <= 6.5e-7 * n3 vx vy vz.
 Proof.
-  intros w x y z vx vy vz HQ HV Nr HNr tx ty tz sx sy sz gx gy gz Hr Tx Ty Tz.
+  intros w x y z vx vy vz HQ HV tx ty tz sx sy sz gx gy gz Tx Ty Tz.
   pose proof u_pos as Hu; pose proof eta_pos as He.
   assert (Hu1 : u = / 16777216) by reflexivity.
   assert (He1 : 0 <= eta <= / 2 ^ 140) by (unfold eta; simpl; lra).
   assert (Hnv2 : n3 vx vy vz * n3 vx vy vz = vx * vx + vy * vy + vz * vz) by apply n3_sq.
   assert (Hs2 : n3 x y z * n3 x y z = x * x + y * y + z * z) by apply n3_sq.
   pose proof (n3_pos vx vy vz) as Hnv0; pose proof (n3_pos x y z) as Hs0.
-  assert (Hnv : / 2 <= n3 vx vy vz <= 1) by (split; nra).
+  assert (Hnv : / 3 <= n3 vx vy vz) by nra.
   assert (Hw2 : Rabs w * Rabs w = w * w) by (rewrite <- Rabs_mult; apply Rabs_right; nra).
   pose proof (Rabs_pos w) as Hcw.
   assert (Hq : n3 x y z * n3 x y z + Rabs w * Rabs w <= 1 + / 1048576) by lra.
@@ -303,20 +305,44 @@ Proof.
     rewrite n3_scal, (Rabs_right 2) by lra.
     apply Rmult_le_compat_r; [lra|].
     rewrite <- (sqrt_square (1 + / 1048576)) by lra. apply sqrt_le_1_alt. nra. }
+  (* The four errors before the last sums, within 6.5e-7 |v| (the five
+     with none from the last sums). *)
+  set (Sig := n3 (sx - (vx + mx)) (sy - (vy + my)) (sz - (vz + mz))) in *.
+  set (Mu := n3 (mx - tx * w) (my - ty * w) (mz - tz * w)) in *.
+  set (Gam := n3 (gx - (y * tz - z * ty)) (gy - (z * tx - x * tz)) (gz - (x * ty - y * tx))) in *.
+  set (L := n3 (w * (2 * ex) + (y * (2 * ez) - z * (2 * ey))) (w * (2 * ey) + (z * (2 * ex) - x * (2 * ez)))
+                (w * (2 * ez) + (x * (2 * ey) - y * (2 * ex)))) in *.
+  assert (H4 : 0 + Sig + Mu + Gam + L <= 6.5e-7 * n3 vx vy vz).
+  { eapply (rotate_combine u kap eta (n3 x y z) (Rabs w) (n3 vx vy vz) (n3 ex ey ez) (n3 tx ty tz) _ _ _ _ 0 0);
+      eauto; lra. }
+  (* So the sum the last sums round is at most (1 + 1e-5) |v| long. *)
+  assert (HSG : n3 (sx + gx) (sy + gy) (sz + gz) <= (1 + 1e-5) * n3 vx vy vz).
+  { pose proof (formula_len w x y z vx vy vz HQ) as HF. cbv zeta in HF.
+    assert (Tri4 : forall p1 p2 p3 q1 q2 q3 r1 r2 r3 o1 o2 o3 l1 l2 l3,
+      n3 (p1 + (q1 + r1 + o1 + l1)) (p2 + (q2 + r2 + o2 + l2)) (p3 + (q3 + r3 + o3 + l3))
+      <= n3 p1 p2 p3 + (n3 q1 q2 q3 + n3 r1 r2 r3 + n3 o1 o2 o3 + n3 l1 l2 l3)).
+    { intros. eapply Rle_trans; [apply n3_triang|]. apply Rplus_le_compat_l.
+      eapply Rle_trans; [apply n3_triang|]. apply Rplus_le_compat_r.
+      eapply Rle_trans; [apply n3_triang|]. apply Rplus_le_compat_r. apply n3_triang. }
+    assert (Fx : sx + gx = (vx + (y * vz - z * vy) * 2 * w + (y * ((x * vy - y * vx) * 2) - z * ((z * vx - x * vz) * 2)))
+        + ((sx - (vx + mx)) + (mx - tx * w) + (gx - (y * tz - z * ty)) + (w * (2 * ex) + (y * (2 * ez) - z * (2 * ey)))))
+      by (rewrite Etx', Ety', Etz'; ring).
+    assert (Fy : sy + gy = (vy + (z * vx - x * vz) * 2 * w + (z * ((y * vz - z * vy) * 2) - x * ((x * vy - y * vx) * 2)))
+        + ((sy - (vy + my)) + (my - ty * w) + (gy - (z * tx - x * tz)) + (w * (2 * ey) + (z * (2 * ex) - x * (2 * ez)))))
+      by (rewrite Etx', Ety', Etz'; ring).
+    assert (Fz : sz + gz = (vz + (x * vy - y * vx) * 2 * w + (x * ((z * vx - x * vz) * 2) - y * ((y * vz - z * vy) * 2)))
+        + ((sz - (vz + mz)) + (mz - tz * w) + (gz - (x * ty - y * tx)) + (w * (2 * ez) + (x * (2 * ey) - y * (2 * ex)))))
+      by (rewrite Etx', Ety', Etz'; ring).
+    rewrite Fx, Fy, Fz. eapply Rle_trans; [apply Tri4|]. fold Sig Mu Gam L. lra. }
   (* The last sum. *)
   assert (Hrho : n3 (rnd (sx + gx) - (sx + gx)) (rnd (sy + gy) - (sy + gy)) (rnd (sz + gz) - (sz + gz))
-                 <= u * (Nr + n3 (rnd (sx + gx) - (sx + gx)) (rnd (sy + gy) - (sy + gy)) (rnd (sz + gz) - (sz + gz))) + 2 * eta).
+                 <= u * (n3 (sx + gx) (sy + gy) (sz + gz)
+                         + n3 (rnd (sx + gx) - (sx + gx)) (rnd (sy + gy) - (sy + gy)) (rnd (sz + gz) - (sz + gz))) + 2 * eta).
   { eapply Rle_trans; [apply n3_le; apply rnd_err|].
     eapply Rle_trans; [apply n3_plus_const; lra|].
     rewrite n3_scal, n3_abs, (Rabs_right u) by lra.
-    apply Rplus_le_compat_r. apply Rmult_le_compat_l; [lra|].
-    pose proof (n3_triang (rnd (sx + gx)) (rnd (sy + gy)) (rnd (sz + gz))
-      (-1 * (rnd (sx + gx) - (sx + gx))) (-1 * (rnd (sy + gy) - (sy + gy))) (-1 * (rnd (sz + gz) - (sz + gz)))) as Tri.
-    rewrite n3_scal in Tri. assert (M1 : Rabs (-1) = 1) by (rewrite Rabs_left; lra). rewrite M1 in Tri.
-    replace (rnd (sx + gx) + -1 * (rnd (sx + gx) - (sx + gx))) with (sx + gx) in Tri by ring.
-    replace (rnd (sy + gy) + -1 * (rnd (sy + gy) - (sy + gy))) with (sy + gy) in Tri by ring.
-    replace (rnd (sz + gz) + -1 * (rnd (sz + gz) - (sz + gz))) with (sz + gz) in Tri by ring.
-    lra. }
+    pose proof (n3_pos (rnd (sx + gx) - (sx + gx)) (rnd (sy + gy) - (sy + gy)) (rnd (sz + gz) - (sz + gz))).
+    nra. }
   (* The whole error, as the sum of the five. *)
   assert (Split : forall p1 p2 p3 q1 q2 q3 r1 r2 r3 o1 o2 o3 l1 l2 l3,
     n3 (p1 + q1 + r1 + o1 + l1) (p2 + q2 + r2 + o2 + l2) (p3 + q3 + r3 + o3 + l3)
@@ -338,13 +364,12 @@ Proof.
   eapply (rotate_combine u kap eta (n3 x y z) (Rabs w) (n3 vx vy vz) (n3 ex ey ez) (n3 tx ty tz)); eauto; lra.
 Qed.
 
-(* The law, on the terms of rotate.g's certificate. *)
+(* The law, on the terms of rotate.g. *)
 Theorem rotate_error : forall W X Y Z VX VY VZ : R,
   let w := rnd W in let x := rnd X in let y := rnd Y in let z := rnd Z in
   let vx := rnd VX in let vy := rnd VY in let vz := rnd VZ in
   1 - / 1048576 <= w * w + x * x + y * y + z * z <= 1 + / 1048576 ->
   / 4 <= vx * vx + vy * vy + vz * vz <= 1 ->
-  Rabs w <= 1 -> Rabs x <= 1 -> Rabs y <= 1 -> Rabs z <= 1 ->
   let tx := rnd (rnd (rnd (y * vz) - rnd (z * vy)) * 2) in
   let ty := rnd (rnd (rnd (z * vx) - rnd (x * vz)) * 2) in
   let tz := rnd (rnd (rnd (x * vy) - rnd (y * vx)) * 2) in
@@ -360,43 +385,15 @@ Theorem rotate_error : forall W X Y Z VX VY VZ : R,
   sqrt ((rx - Rx) * (rx - Rx) + (ry - Ry) * (ry - Ry) + (rz - Rz) * (rz - Rz))
     / sqrt (vx * vx + vy * vy + vz * vz) <= 6.5e-7.
 Proof.
-  intros W X Y Z VX VY VZ w x y z vx vy vz HQ HV Hw Hx Hy Hz tx ty tz rx ry rz Tx Ty Tz Rx Ry Rz.
+  intros W X Y Z VX VY VZ w x y z vx vy vz HQ HV tx ty tz rx ry rz Tx Ty Tz Rx Ry Rz.
   change (sqrt ((rx - Rx) * (rx - Rx) + (ry - Ry) * (ry - Ry) + (rz - Rz) * (rz - Rz)))
     with (n3 (rx - Rx) (ry - Ry) (rz - Rz)).
   change (sqrt (vx * vx + vy * vy + vz * vz)) with (n3 vx vy vz).
   pose proof (n3_pos vx vy vz) as Hnv0.
   assert (Hnv2 : n3 vx vy vz * n3 vx vy vz = vx * vx + vy * vy + vz * vz) by apply n3_sq.
   assert (Hnv : 0 < n3 vx vy vz) by nra.
-  (* The certificate of rotate.g: the error within 3.8e-6 |v|. *)
-  assert (Hcert : n3 (rx - Rx) (ry - Ry) (rz - Rz) / n3 vx vy vz <= 3.8e-6).
-  { apply Classical_Prop.NNPP; intro Hn.
-    assert (Hv1 : forall t, t * t <= 1 -> Rabs t <= 1).
-    { intros t Ht. apply Rabs_le. nra. }
-    refine (Laws.rotate.l1 Y VZ Z VY _ VX X _ _ W _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _);
-      try (unfold Float1; ring).
-    unfold Laws.rotate.s1. split.
-    2: { intro Hg. apply Hn. destruct Hg as [_ Hg]. eapply Rle_trans; [exact Hg|].
-         unfold Laws.rotate.i4, Laws.rotate.f6. gappa_nums. lra. }
-    unfold Laws.rotate.s2, Laws.rotate.s3, Laws.rotate.s4, Laws.rotate.s5,
-      Laws.rotate.s6, Laws.rotate.s7, Laws.rotate.s8, Laws.rotate.s9.
-    assert (Hvx : Rabs vx <= 1) by (apply Hv1; nra).
-    assert (Hvy : Rabs vy <= 1) by (apply Hv1; nra).
-    assert (Hvz : Rabs vz <= 1) by (apply Hv1; nra).
-    pose proof (Rabs_pos w); pose proof (Rabs_pos x); pose proof (Rabs_pos y); pose proof (Rabs_pos z);
-    pose proof (Rabs_pos vx); pose proof (Rabs_pos vy); pose proof (Rabs_pos vz).
-    clear Hn. unfold w, x, y, z, vx, vy, vz in *. gappa_nums.
-    repeat split; lra. }
-  assert (Hc2 : n3 (rx - Rx) (ry - Ry) (rz - Rz) <= 3.8e-6 * n3 vx vy vz).
-  { apply Rmult_le_reg_r with (/ n3 vx vy vz); [apply Rinv_0_lt_compat; lra|].
-    rewrite Rmult_assoc, Rinv_r by lra. unfold Rdiv in Hcert. lra. }
-  (* So the computed result's length is at most |F(v)| + 3.8e-6 |v|. *)
-  pose proof (formula_len w x y z vx vy vz HQ) as HF.
-  pose proof (n3_triang Rx Ry Rz (rx - Rx) (ry - Ry) (rz - Rz)) as Tri.
-  replace (Rx + (rx - Rx)) with rx in Tri by ring.
-  replace (Ry + (ry - Ry)) with ry in Tri by ring.
-  replace (Rz + (rz - Rz)) with rz in Tri by ring.
-  assert (HNr : n3 rx ry rz <= (1 + 1e-5) * n3 vx vy vz) by (unfold Rx, Ry, Rz, Tx, Ty, Tz in *; lra).
-  pose proof (rotate_main w x y z vx vy vz HQ HV _ (Rle_refl _) HNr) as Main.
+  assert (HV9 : / 9 <= vx * vx + vy * vy + vz * vz) by lra.
+  pose proof (rotate_main w x y z vx vy vz HQ HV9) as Main.
   apply Rmult_le_reg_r with (n3 vx vy vz); [lra|].
   unfold Rdiv. rewrite Rmult_assoc, Rinv_l by lra. rewrite Rmult_1_r. exact Main.
 Qed.

@@ -9,9 +9,9 @@
 # such a scaling, and the arithmetic commutes with it where nothing
 # underflows).
 #
-# Proven: the error vector's length at most 3.8e-6 |v|, on which
-# proofs/coq/rotate_error.v proves 6.5e-7 |v| (the constant's bound) by
-# vectors: it needs this bound for the length of the result. (On the way Gappa
+# Proven: the error vector's length at most 3.8e-6 |v|.
+# proofs/coq/rotate_error.v proves 6.5e-7 |v| (the constant's bound) on
+# the same terms by vectors, without this certificate. (On the way Gappa
 # bounds |t|^2 = |2 u x v|^2 by 4.00001 and each component of the result
 # within 13 2^-23 of the exact value of the same formula; those are not
 # goals, which halves Coq's time on the certificate.) For unit q

@@ -529,6 +529,7 @@ fn rotation_is_rotate_g() {
         return;
     };
     assert_eq!(m.inputs, ["w", "x", "y", "z", "vx", "vy", "vz"]);
+    law_terms_are_the_models("rotate_error", &m);
     for (i, mut d) in draws() {
         let v: [f32; 7] = if i % 3 == 0 {
             let (q, p) = (d.unit_quat(), d.vec3(10.0));
@@ -692,6 +693,7 @@ fn rig_tform_inverse_identities_are_rigtform_inv_g() {
         return;
     };
     assert_eq!(m.inputs, ["w", "x", "y", "z", "t1", "t2", "t3"]);
+    law_terms_are_the_models("rigtform_inverse", &m);
     for (i, mut d) in draws() {
         let v: [f32; 7] = if i % 3 == 0 {
             let (q, t) = (d.unit_quat(), d.vec3(100.0));

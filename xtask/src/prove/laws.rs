@@ -8,7 +8,9 @@
 //! on (`Require Laws.MODEL.`, the certificate of `proofs/gappa/MODEL.g`
 //! that this run checked), proves the hypotheses of their theorems and
 //! their rewriting hints, and states its own theorem on the code's
-//! arithmetic (Flocq's rounding, as the certificates write it).
+//! arithmetic (Flocq's rounding, as the certificates write it). A law may
+//! build on another law the same way (`Require Laws.LAW.`): it is
+//! compiled after it.
 //!
 //! A law file says what it proves in a line
 //! `(*! bound NAME THEOREM <= VALUE what *)`: the constant `NAME` of
@@ -62,6 +64,40 @@ pub fn law_files(dir: &Path) -> Result<Vec<PathBuf>> {
         .collect();
     files.sort();
     Ok(files)
+}
+
+/// `files` ordered so that each law comes after the laws it requires
+/// (`texts` holds their texts, in the same order), and otherwise in order
+/// of name.
+fn in_dependency_order(files: Vec<PathBuf>, texts: &[String]) -> Result<Vec<PathBuf>> {
+    let stems: Vec<String> = files
+        .iter()
+        .map(|p| {
+            p.file_stem()
+                .and_then(|s| s.to_str())
+                .unwrap_or("")
+                .to_owned()
+        })
+        .collect();
+    let needs: Vec<Vec<usize>> = texts
+        .iter()
+        .map(|t| {
+            required(t)
+                .iter()
+                .filter_map(|n| stems.iter().position(|s| s == n))
+                .collect()
+        })
+        .collect();
+    let mut done = vec![false; files.len()];
+    let mut order = Vec::new();
+    while order.len() < files.len() {
+        let next = (0..files.len())
+            .find(|&i| !done[i] && needs[i].iter().all(|&j| done[j]))
+            .with_context(|| format!("the laws {stems:?} require each other in a circle"))?;
+        done[next] = true;
+        order.push(files[next].clone());
+    }
+    Ok(order)
 }
 
 /// A claim of a law file: `bound NAME THEOREM <= VALUE what`.
@@ -189,8 +225,13 @@ pub fn prove_laws(dir: &Path, work: &Path, models: &[String]) -> Result<Vec<Prov
             .with_context(|| format!("{}", library.display()))?;
         coqc(work, &work.join(format!("{name}.v")))?;
     }
+    let files = law_files(dir)?;
+    let texts = files
+        .iter()
+        .map(|p| std::fs::read_to_string(p).with_context(|| format!("{}", p.display())))
+        .collect::<Result<Vec<_>>>()?;
     let mut proven = Vec::new();
-    for path in law_files(dir)? {
+    for path in in_dependency_order(files, &texts)? {
         let start = Instant::now();
         let stem = path
             .file_stem()
@@ -238,7 +279,7 @@ pub fn prove_laws(dir: &Path, work: &Path, models: &[String]) -> Result<Vec<Prov
         let time = start.elapsed();
         let certificates: Vec<_> = needs
             .iter()
-            .filter(|n| !LIBRARY.contains(&n.as_str()))
+            .filter(|n| models.contains(n))
             .map(|n| format!("{n}.g"))
             .collect();
         crate::tools::say(format!(
@@ -275,6 +316,16 @@ mod tests {
         assert!(check_statement(LAW, &other, &value).is_err());
         let assumed = LAW.replace("0 <= x <= 1", "f x <= 2.5e-7");
         assert!(check_statement(&assumed, &claim, "2.5e-7").is_err());
+    }
+
+    #[test]
+    fn a_law_is_compiled_after_the_laws_it_requires() {
+        let files: Vec<PathBuf> = ["a.v", "b.v", "c.v"].iter().map(PathBuf::from).collect();
+        let texts = ["Require Laws.c.\n", "", "Require Laws.b.\n"].map(String::from);
+        let order = in_dependency_order(files.clone(), &texts).expect("order");
+        assert_eq!(order, ["b.v", "c.v", "a.v"].map(PathBuf::from));
+        let circle = ["Require Laws.b.\n", "Require Laws.a.\n", ""].map(String::from);
+        assert!(in_dependency_order(files, &circle).is_err());
     }
 
     #[test]
