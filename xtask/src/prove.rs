@@ -185,8 +185,12 @@ fn run_sollya(dir: &Path, file: &str) -> Result<f64> {
 /// Gappa on a model, its certificate written as Coq (`-Bcoq`): its stdout
 /// (the certificate) and stderr (warnings, or the error). Gappa orders its
 /// proof by where its objects lie in memory, so it runs with the address
-/// space laid out the same each time (`setarch -R`, where there is one):
-/// the same model then gives the same certificate, byte for byte.
+/// space laid out the same each time (`setarch -R`, where there is one)
+/// and with no environment but `PATH`: a preloaded library (`LD_PRELOAD`,
+/// as `stdbuf` and sanitizers set it) or malloc's tunables move its heap
+/// and change the proof it finds. The same model then gives the same
+/// certificate, byte for byte, which the laws of `proofs/coq/` rely on
+/// (they name the certificate's lemmas).
 fn run_gappa(path: &Path) -> Result<(bool, String, String)> {
     let mut cmd = if Command::new("setarch").arg("--version").output().is_ok() {
         let mut c = Command::new("setarch");
@@ -195,6 +199,10 @@ fn run_gappa(path: &Path) -> Result<(bool, String, String)> {
     } else {
         Command::new("gappa")
     };
+    cmd.env_clear();
+    if let Some(path) = std::env::var_os("PATH") {
+        cmd.env("PATH", path);
+    }
     let out = cmd
         .arg("-Bcoq")
         .arg(path)
