@@ -39,7 +39,7 @@
 //! | [`MUL_MAX_ANGLE_ERROR`] | 1.2e-6 |
 //! | [`ROTATE_MAX_REL_ERROR`] | 6.5e-7 |
 //! | [`MATRIX_ENTRY_ERROR`] | 6.6e-7 |
-//! | [`INVERSE_MAX_REL_ERROR`] | 5.5e-7 |
+//! | [`INVERSE_MAX_REL_ERROR`] | 5.4e-7 |
 //! | [`NORMALIZE_MAX_NORM_ERROR`] | 2.4e-7 |
 //! | [`UNIT_NORM_ERROR`] | 3.5e-7 |
 //! | [`POW_MAX_ANGLE_ERROR`] | 3.4e-7 |
@@ -463,12 +463,30 @@ pub const SAMPLER_CUBIC_MAX_ANGLE_ERROR: f32 = 1.0e-6; // 8.091e-7 (4,000,000 sa
 /// (`deep_vector_sampler_search` in `proofs/tests/worst_cases.rs`) finds
 /// 6.628e-7, so the bound is 3.7 times what is found.
 pub const SAMPLER_VEC3_MAX_REL_ERROR: f32 = 2.5e-6; // 5.774e-7 (4,000,000 samples of each), 6.628e-7 (search), 2.48e-6 proven
-/// Error of `Matrix4::inverse` relative to the inverse's size (Frobenius
-/// norm), per unit of the matrix's condition number `|M| |M^-1|`: measured on
-/// random 4x4 matrices with entries in [-1, 1] and condition below 1e4.
+/// Error of an entry of [`Matrix4::inverse`](crate::Matrix4::inverse),
+/// `|entry - C / D|` with `C` the entry's cofactor (the signed
+/// determinant of the 3x3 matrix left without one row and one column)
+/// and `D` the determinant, relative to `(Ac + |C| T / |D|) / |D|`: `Ac`
+/// the sum of the magnitudes of the cofactor's six products, `T` that of
+/// the 24 products of the determinant's expansion (as
+/// [`DETERMINANT_MAX_REL_ERROR`]). The first part is the cofactor's own
+/// rounding, the second the determinant's error carried into every entry
+/// through `1 / det`; `T / |D|` is how much the expansion cancels, which
+/// grows with the condition number. For every matrix whose expansion
+/// cancels by at most 2^12 (`T <= 4096 |D|`), where nothing underflows or
+/// overflows (after scaling the largest entry to 1, `|D|` at least
+/// 2^-100; besides that, `20 2^-150 (1 + 1 / |D|)` near underflow).
 ///
-/// Known: measured: the largest error over the draws in its doc, rounded up.
-pub const INVERSE_MAX_REL_ERROR: f32 = 5.5e-7; // 4.171e-7
+/// Known: proven: `proofs/coq/matrix4_inverse_bound.v` proves 5.376e-7
+/// (Coq, on the rounded terms of `proofs/gappa/matrix4_inverse.g`, which
+/// computes the code's bits): each product of the cofactor rounds six
+/// times (its minor's three, the product with `1 / det`, the product
+/// with the entry, the sums), and `1 / det` is within `2^-24 + 4.7684e-7`
+/// (its rounding and the determinant's, relative to `T / |D|`) of `1 /
+/// D`. A search (`deep_matrix4_inverse_search` in
+/// `proofs/tests/worst_cases.rs`) finds 2.0199e-7: the bound is 2.7 times
+/// that.
+pub const INVERSE_MAX_REL_ERROR: f32 = 5.4e-7; // 2.0199e-7 (search), 5.376e-7 proven
 /// Error of the translation of [`Matrix4::look_at_rh`](crate::Matrix4::look_at_rh),
 /// relative to `|eye|`, against nalgebra's f64 `Matrix4::look_at_rh` of the
 /// same f32 points (eyes and targets in a cube of half-side 100, `up` at

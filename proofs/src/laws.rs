@@ -472,8 +472,13 @@ pub fn rigid_inverse_is_an_involution(a: RigTForm) -> Verdict {
 /// `RigTForm::inv` agrees with `Matrix4::inverse`: the matrix of `a.inv()`
 /// equals the inverse of the matrix of `a`, entry by entry, within
 /// `(8 INVERSE_MAX_REL_ERROR + 4 ONE_STEP_NORM_TOL) (1 + |t|_1)` (the cofactor inverse of a rigid
-/// matrix has a unit determinant and its translation column is three
-/// triple products with `t`).
+/// matrix has a unit determinant whose expansion's magnitudes `T` sum to
+/// at most `3 sqrt 3` for unit rows; a rotation entry's cofactor is a 2x2
+/// minor, its products' magnitudes at most 2, and a translation entry's is
+/// a triple product with `t`, at most `|t|` and its products' magnitudes
+/// at most `2 |t|_1`: each entry within `(2 + 3 sqrt 3)
+/// INVERSE_MAX_REL_ERROR` or `(2 |t|_1 + 3 sqrt 3 |t|)
+/// INVERSE_MAX_REL_ERROR` of the exact one).
 ///
 /// Preconditions: `a.r` unit to [`ONE_STEP_NORM_TOL`], `a.t` finite with
 /// `|a.t| <= 2^20`.

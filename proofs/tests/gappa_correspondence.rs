@@ -1261,6 +1261,19 @@ fn determinant_of_matrix3_is_matrix3_determinant_g() {
     }
 }
 
+/// The columns, column-major, of the 4x4 models' inputs `a0 a1 a2 b0 ...
+/// d2 x y z w`: (a0, a1, a2, x), (b0, b1, b2, y), (c0, c1, c2, z), (d0,
+/// d1, d2, w).
+fn matrix4_columns(v: &[f32; 16]) -> [f32; 16] {
+    core::array::from_fn(|i| {
+        if i % 4 == 3 {
+            v[12 + i / 4]
+        } else {
+            v[3 * (i / 4) + i % 4]
+        }
+    })
+}
+
 #[test]
 fn determinant_of_matrix4_is_matrix4_determinant_g() {
     let Some(m) = model("matrix4_determinant", Code::F32) else {
@@ -1273,14 +1286,7 @@ fn determinant_of_matrix4_is_matrix4_determinant_g() {
     law_terms_are_the_models("matrix4_determinant_bound", &m);
     for (_, mut d) in draws() {
         let v: [f32; 16] = core::array::from_fn(|_| component(&mut d));
-        // Columns (a0, a1, a2, x), (b0, b1, b2, y), (c0, c1, c2, z), (d0, d1, d2, w).
-        let cols: [f32; 16] = core::array::from_fn(|i| {
-            if i % 4 == 3 {
-                v[12 + i / 4]
-            } else {
-                v[3 * (i / 4) + i % 4]
-            }
-        });
+        let cols = matrix4_columns(&v);
         let det = rigtform::Matrix4::from_cols_array(&cols).determinant();
         check(&m, &m.run(&v.map(f64::from)), "det", det, &v);
     }
@@ -1329,4 +1335,114 @@ fn inverse_of_matrix3_is_matrix3_inverse_g() {
         }
     }
     assert!(seen > DRAWS / 4, "{seen} invertible draws");
+}
+
+/// The 2x2 minors of `Matrix4::inverse` as the model's `g0 g1 - g2 g3`,
+/// `[g0, g1, g2, g3]`, for the columns' first three coordinates `a, b,
+/// c, d` and last `x, y, z, w`: `s = a x b`, `t = c x d`, `u = a y - b x`,
+/// `v = c w - d z`, component `i`.
+struct Minors4 {
+    a: [f32; 3],
+    b: [f32; 3],
+    c: [f32; 3],
+    d: [f32; 3],
+    x: f32,
+    y: f32,
+    z: f32,
+    w: f32,
+}
+
+impl Minors4 {
+    fn s(&self, i: usize) -> [f32; 4] {
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        [self.a[j], self.b[k], self.a[k], self.b[j]]
+    }
+    fn t(&self, i: usize) -> [f32; 4] {
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        [self.c[j], self.d[k], self.c[k], self.d[j]]
+    }
+    fn u(&self, i: usize) -> [f32; 4] {
+        [self.a[i], self.y, self.b[i], self.x]
+    }
+    fn v(&self, i: usize) -> [f32; 4] {
+        [self.c[i], self.w, self.d[i], self.z]
+    }
+
+    /// Row `row`, column `i` of the inverse as the model's entry: the
+    /// three entries `f`, the three minors, and the sign by which the
+    /// model's `e` is the code's entry. Rows 0 to 3 are `b x v + t y`,
+    /// `v x a - t x`, `d x u + s w`, `u x c - s z` in their first three
+    /// columns (a cross product's second product and a subtracted term
+    /// are a negated entry's) and `-b . t`, `a . t`, `-d . s`, `c . s` in
+    /// the last.
+    fn entry(&self, row: usize, i: usize) -> ([f32; 3], [[f32; 4]; 3], f32) {
+        let (a, b, c, d) = (self.a, self.b, self.c, self.d);
+        if i == 3 {
+            let (f, minor, sign) = match row {
+                0 => (b, [self.t(0), self.t(1), self.t(2)], -1.0),
+                1 => (a, [self.t(0), self.t(1), self.t(2)], 1.0),
+                2 => (d, [self.s(0), self.s(1), self.s(2)], -1.0),
+                _ => (c, [self.s(0), self.s(1), self.s(2)], 1.0),
+            };
+            return (f, minor, sign);
+        }
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        let (f, minor) = match row {
+            0 => ([b[j], -b[k], self.y], [self.v(k), self.v(j), self.t(i)]),
+            1 => ([a[k], -a[j], -self.x], [self.v(j), self.v(k), self.t(i)]),
+            2 => ([d[j], -d[k], self.w], [self.u(k), self.u(j), self.s(i)]),
+            _ => ([c[k], -c[j], -self.z], [self.u(j), self.u(k), self.s(i)]),
+        };
+        (f, minor, 1.0)
+    }
+}
+
+#[test]
+fn inverse_of_matrix4_is_matrix4_inverse_g() {
+    let Some(m) = model("matrix4_inverse", Code::F32) else {
+        return;
+    };
+    let names = [
+        "a0", "a1", "a2", "b0", "b1", "b2", "c0", "c1", "c2", "d0", "d1", "d2", "x", "y", "z", "w",
+        "f0", "f1", "f2", "g0", "g1", "g2", "g3", "h0", "h1", "h2", "h3", "k0", "k1", "k2", "k3",
+    ];
+    assert_eq!(m.inputs, names);
+    law_terms_are_the_models("matrix4_inverse_bound", &m);
+    let mut seen = 0;
+    for (_, mut d) in draws() {
+        let v: [f32; 16] = core::array::from_fn(|_| component(&mut d));
+        let cols = matrix4_columns(&v);
+        let Some(inv) = rigtform::Matrix4::from_cols_array(&cols).inverse() else {
+            continue;
+        };
+        seen += 1;
+        let three = |k: usize| [v[3 * k], v[3 * k + 1], v[3 * k + 2]];
+        let minors = Minors4 {
+            a: three(0),
+            b: three(1),
+            c: three(2),
+            d: three(3),
+            x: v[12],
+            y: v[13],
+            z: v[14],
+            w: v[15],
+        };
+        let entries = inv.to_cols_array();
+        for row in 0..4 {
+            for i in 0..4 {
+                let (f, minor, sign) = minors.entry(row, i);
+                let all: Vec<f32> = v
+                    .iter()
+                    .chain(&f)
+                    .chain(minor.iter().flatten())
+                    .copied()
+                    .collect();
+                let inputs: Vec<f64> = all.iter().map(|&c| f64::from(c)).collect();
+                check(&m, &m.run(&inputs), "e", sign * entries[4 * i + row], &all);
+            }
+        }
+    }
+    // Sixteen components, half of them from the mixture of edge values:
+    // most draws hold an infinity, a NaN or an entry beyond the limits.
+    assert!(seen > DRAWS / 8, "{seen} invertible draws");
 }

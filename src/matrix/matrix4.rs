@@ -222,10 +222,14 @@ impl Matrix4 {
     ///
     /// # Accuracy
     ///
-    /// Relative error (Frobenius norm) at most
+    /// Each entry within
     /// [`accuracy::INVERSE_MAX_REL_ERROR`](crate::accuracy::INVERSE_MAX_REL_ERROR)
-    /// times the condition number `|M| |M^-1|`, so a nearly singular matrix
-    /// yields a correspondingly inaccurate inverse.
+    /// times `(Ac + |C| T / |det|) / |det|` of the exact one, `C` being its
+    /// cofactor, `Ac` the magnitudes of the cofactor's six products and `T`
+    /// those of the determinant's 24 (proven, where `T <= 4096 |det|`): the
+    /// cofactor's rounding, and the determinant's error, which grows as the
+    /// expansion cancels, so a nearly singular matrix yields a
+    /// correspondingly inaccurate inverse.
     ///
     /// # Examples
     ///
