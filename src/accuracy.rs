@@ -63,7 +63,7 @@
 //! | [`SAMPLER_CUBIC_MAX_ANGLE_ERROR`] | 1.0e-6 |
 //! | [`SAMPLER_VEC3_MAX_REL_ERROR`] | 2.5e-6 |
 //! | [`ANGLE_BETWEEN_MAX_ERROR`] | 4.2e-7 |
-//! | [`PROJECT_MAX_REL_ERROR`] | 4.5e-7 |
+//! | [`PROJECT_MAX_REL_ERROR`] | 5.5e-7 |
 //! | [`MATRIX3_INVERSE_MAX_REL_ERROR`] | 3.6e-7 |
 //! | [`MATRIX3_DETERMINANT_MAX_REL_ERROR`] | 3.0e-7 |
 //! | [`LOOK_AT_RH_MAX_TRANSLATION_ERROR`] | 1.1e-6 |
@@ -544,10 +544,12 @@ pub const ANGLE_BETWEEN_MAX_ERROR: f32 = backend::ANGLE_BETWEEN_MAX_ERROR;
 /// Error of [`Cvec3::project_onto`](crate::Cvec3::project_onto) and
 /// [`Cvec3::reject_from`](crate::Cvec3::reject_from) (and of `Cvec4`'s),
 /// relative to `|self|`, against the exact projection of the same f32
-/// vectors (nalgebra in f64), random pairs at scales 2^-40 to 2^40.
+/// vectors (nalgebra in f64), random pairs at scales 2^-40 to 2^40, and
+/// the pairs `deep_projection_search` (`proofs/tests/worst_cases.rs`)
+/// climbs to from random, near-parallel and near-orthogonal starts.
 ///
-/// Known: measured: the largest error over the draws in its doc, rounded up.
-pub const PROJECT_MAX_REL_ERROR: f32 = 4.5e-7; // 3.619e-7 (reject_from), 3.612e-7 (project_onto), 3.563e-7 (Cvec4)
+/// Known: measured: the largest error the search finds, rounded up.
+pub const PROJECT_MAX_REL_ERROR: f32 = 5.5e-7; // 5.4611e-7 (Cvec4 reject_from, search), 3.619e-7 (random draws)
 
 #[cfg(test)]
 mod tests {
