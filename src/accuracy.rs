@@ -63,7 +63,7 @@
 //! | [`SAMPLER_CUBIC_MAX_ANGLE_ERROR`] | 1.0e-6 |
 //! | [`SAMPLER_VEC3_MAX_REL_ERROR`] | 2.5e-6 |
 //! | [`ANGLE_BETWEEN_MAX_ERROR`] | 4.2e-7 |
-//! | [`PROJECT_MAX_REL_ERROR`] | 8.36e-7 |
+//! | [`PROJECT_MAX_REL_ERROR`] | 7.83e-7 |
 //! | [`MATRIX3_INVERSE_MAX_REL_ERROR`] | 3.6e-7 |
 //! | [`MATRIX3_DETERMINANT_MAX_REL_ERROR`] | 3.0e-7 |
 //! | [`LOOK_AT_RH_MAX_TRANSLATION_ERROR`] | 1.1e-6 |
@@ -550,8 +550,8 @@ pub const ANGLE_BETWEEN_MAX_ERROR: f32 = backend::ANGLE_BETWEEN_MAX_ERROR;
 /// overflows to infinity).
 ///
 /// Known: proven: `proofs/coq/project4_bound.v` (`Cvec4`) and
-/// `proofs/coq/project3_bound.v` (`Cvec3`) prove 8.36e-7 for both
-/// (their lemmas: 7.7584e-7 for `project_onto` and 8.3545e-7 for
+/// `proofs/coq/project3_bound.v` (`Cvec3`) prove 7.83e-7 for both
+/// (their lemmas: 7.7584e-7 for `project_onto` and 7.8175e-7 for
 /// `reject_from`; Coq, on the rounded
 /// terms of `proofs/gappa/project4.g` and `project3.g`, which compute the
 /// code's bits, and on the certificate of `normalize.g` for the norm of
@@ -559,8 +559,8 @@ pub const ANGLE_BETWEEN_MAX_ERROR: f32 = backend::ANGLE_BETWEEN_MAX_ERROR;
 /// exactly or within 2^-150). A search (`deep_projection_search` in
 /// `proofs/tests/worst_cases.rs`, from random, near-parallel and
 /// near-orthogonal pairs) finds 5.4611e-7 (`Cvec4::reject_from`): the
-/// bound is 1.53 times that. Random draws reach 3.619e-7.
-pub const PROJECT_MAX_REL_ERROR: f32 = 8.36e-7; // 8.36e-7 proven; 5.4611e-7 (by search), 3.619e-7 (random)
+/// bound is 1.43 times that. Random draws reach 3.619e-7.
+pub const PROJECT_MAX_REL_ERROR: f32 = 7.83e-7; // 7.83e-7 proven; 5.4611e-7 (by search), 3.619e-7 (random)
 
 #[cfg(test)]
 mod tests {

@@ -3,9 +3,9 @@
    rejection a - project_onto(a, b) (reject_from), for Cvec4
    (project3_bound.v: Cvec3): the error vector against the exact
    projection P = (a . b / |b|^2) b of the same f32 vectors, and against
-   the exact rejection a - P, is at most 7.7584e-7 |a| and 8.3545e-7 |a|
+   the exact rejection a - P, is at most 7.7584e-7 |a| and 7.8175e-7 |a|
    long (project4_main); the theorem project4 states the larger of the
-   two, over |a|, at most 8.36e-7.
+   two, over |a|, at most 7.83e-7.
    The rounded terms are those of proofs/gappa/project4.g, which computes
    the code's bits (the correspondence test checks both).
 
@@ -29,9 +29,15 @@
    - each component of the projection, rnd (u_i t), is then within
      7.7584e-7 |a| |U_i| of T U_i = P_i, and the vector of those bounds is
      |U| = 1 times 7.7584e-7 |a| long (norm4_comb);
+   - of that, 4.77331e-7 |a| |U_i| is the dot product's error and
+     2.98505e-7 |T| |U_i| the roundings of u and of the product;
    - the rejection rounds a_i - p_i once more: within
-     (1 + 2^-24) |p_i - P_i| + 2^-24 |R_i| of R_i, where |R| <= |a|. *)
-(*! bound PROJECT_MAX_REL_ERROR project4 <= 8.36e-7 the larger of |project_onto - P| / |a| and |reject_from - (a - P)| / |a|, Cvec4 *)
+     (1 + 2^-24) |p_i - P_i| + 2^-24 |R_i| of R_i = a_i - P_i, and |T| and
+     |R| are the sides of a right angle (|T|^2 + |R|^2 = |a|^2), so the
+     parts relative to them add to at most
+     sqrt(((1 + 2^-24) 2.98505e-7)^2 + 2^-48) |a| <= 3.0441e-7 |a|
+     (right_angle). *)
+(*! bound PROJECT_MAX_REL_ERROR project4 <= 7.83e-7 the larger of |project_onto - P| / |a| and |reject_from - (a - P)| / |a|, Cvec4 *)
 Require Import Reals Psatz.
 Require Import Flocq.Core.Core.
 Require Import Laws.Common Laws.Tracked.
@@ -164,6 +170,22 @@ Proof.
   nra.
 Qed.
 
+(* Two lengths at a right angle, x^2 + y^2 <= z^2, weighted: at most
+   sqrt(c1^2 + c2^2) z (Cauchy-Schwarz in the plane). *)
+Lemma right_angle : forall c1 c2 x y z C, 0 <= c1 -> 0 <= c2 -> 0 <= C ->
+  c1 * c1 + c2 * c2 <= C * C -> 0 <= x -> 0 <= y -> 0 <= z -> x * x + y * y <= z * z ->
+  c1 * x + c2 * y <= C * z.
+Proof.
+  intros c1 c2 x y z C H1 H2 HC HCC Hx Hy Hz Hxy.
+  assert (L : (c1 * x + c2 * y) * (c1 * x + c2 * y) <= (C * z) * (C * z)).
+  { pose proof (Rle_0_sqr (c1 * y - c2 * x)). unfold Rsqr in *.
+    assert ((c1 * c1 + c2 * c2) * (x * x + y * y) <= (C * C) * (z * z)).
+    { apply Rmult_le_compat; nra. }
+    nra. }
+  assert (0 <= C * z) by nra.
+  nra.
+Qed.
+
 (* The whole computation for Cvec4, its error vectors bounded by |a|:
    the projection's first, the rejection's second. *)
 Lemma project4_main : forall a0 a1 a2 a3 B0 B1 B2 B3 : R,
@@ -188,7 +210,7 @@ Lemma project4_main : forall a0 a1 a2 a3 B0 B1 B2 B3 : R,
   n4 (p0 - T * b0) (p1 - T * b1) (p2 - T * b2) (p3 - T * b3) <= 7.7584e-7 * n4 a0 a1 a2 a3 /\
   n4 (rnd (a0 - p0) - (a0 - T * b0)) (rnd (a1 - p1) - (a1 - T * b1))
      (rnd (a2 - p2) - (a2 - T * b2)) (rnd (a3 - p3) - (a3 - T * b3))
-  <= 8.3545e-7 * n4 a0 a1 a2 a3.
+  <= 7.8175e-7 * n4 a0 a1 a2 a3.
 Proof.
   intros a0 a1 a2 a3 B0 B1 B2 B3 b0 b1 b2 b3 HS Ha s n u0 u1 u2 u3 t p0 p1 p2 p3 T.
   pose proof u_pos as Hu. pose proof eta_pos as He.
@@ -307,12 +329,16 @@ Proof.
     { apply Rmult_le_compat; lra. }
     assert (Hea : eta * al <= 1e-44 * al) by (apply Rmult_le_compat_r; [lra|]; unfold eta; simpl; lra).
     unfold tau, theta in *. lra. }
-  assert (Ht : Rabs t <= (1 + tau) * al).
+  assert (Ht : Rabs t <= Rabs TT + tau * al).
   { pose proof (Rabs_triang_inv t TT). unfold tau in *. lra. }
-  (* Each component of the projection. *)
-  set (K := 7.75836e-7).
+  (* Each component of the projection: a part relative to |a|, the
+     dot product's error, and a part relative to |T|, u's and the
+     product's roundings. *)
+  pose proof (Rabs_pos TT) as HT0.
+  set (A := 4.77331e-7). set (B := 2.98505e-7).
+  set (kk := A * al + B * Rabs TT).
   assert (Hp : forall v V, Rabs (v - V) <= theta * Rabs V + eta ->
-                 Rabs (rnd (v * t) - TT * V) <= K * al * Rabs V + 3 * eta * al + eta).
+                 Rabs (rnd (v * t) - TT * V) <= kk * Rabs V + 3 * eta * al + eta).
   { intros v V Hvv.
     pose proof (Mag _ _ Hvv) as Hm. pose proof (Rabs_pos V).
     pose proof (rnd_err (v * t)) as R. rewrite Rabs_mult in R.
@@ -321,34 +347,39 @@ Proof.
     pose proof (Rabs_triang ((rnd (v * t) - v * t) + v * (t - TT)) ((v - V) * TT)).
     pose proof (Rabs_triang (rnd (v * t) - v * t) (v * (t - TT))).
     rewrite Rabs_mult in *.
-    assert (Rabs v * Rabs t <= ((1 + theta) * Rabs V + eta) * ((1 + tau) * al))
+    assert (Rabs v * Rabs t <= ((1 + theta) * Rabs V + eta) * (Rabs TT + tau * al))
       by (apply Rmult_le_compat; try apply Rabs_pos; lra).
     assert (Rabs v * Rabs (t - TT) <= ((1 + theta) * Rabs V + eta) * (tau * al))
       by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    assert (Rabs (v - V) * Rabs TT <= (theta * Rabs V + eta) * al)
+    assert (Rabs (v - V) * Rabs TT <= (theta * Rabs V + eta) * Rabs TT)
       by (apply Rmult_le_compat; try apply Rabs_pos; lra).
     assert (0 <= Rabs V * al) by nra.
+    assert (0 <= Rabs V * Rabs TT) by nra.
     assert (0 <= eta * al) by nra.
-    unfold K, theta, tau in *. rewrite Hu1 in *. lra. }
-  assert (HP0 : Rabs (p0 - T * b0) <= K * al * Rabs U0 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv0).
-  assert (HP1 : Rabs (p1 - T * b1) <= K * al * Rabs U1 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv1).
-  assert (HP2 : Rabs (p2 - T * b2) <= K * al * Rabs U2 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv2).
-  assert (HP3 : Rabs (p3 - T * b3) <= K * al * Rabs U3 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv3).
+    assert (eta * Rabs TT <= eta * al) by (apply Rmult_le_compat_l; lra).
+    unfold kk, A, B, theta, tau in *. rewrite Hu1 in *. lra. }
+  assert (HP0 : Rabs (p0 - T * b0) <= kk * Rabs U0 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv0).
+  assert (HP1 : Rabs (p1 - T * b1) <= kk * Rabs U1 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv1).
+  assert (HP2 : Rabs (p2 - T * b2) <= kk * Rabs U2 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv2).
+  assert (HP3 : Rabs (p3 - T * b3) <= kk * Rabs U3 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv3).
   assert (Hd : 0 <= 3 * eta * al + eta) by nra.
-  assert (HK : 0 <= K * al) by (unfold K; nra).
+  assert (HK : 0 <= kk) by (unfold kk, A, B; nra).
+  assert (HBT : B * Rabs TT <= B * al) by (apply Rmult_le_compat_l; [unfold B; lra|exact HTT]).
   assert (Hsmall : 2 * (3 * eta * al + eta) <= 1e-14 * al).
   { assert (eta * al <= 1e-44 * al) by (apply Rmult_le_compat_r; [lra|]; unfold eta; simpl; lra).
     lra. }
   split.
-  - assert (Z : forall x V, Rabs x <= K * al * Rabs V + 3 * eta * al + eta ->
-                Rabs x <= K * al * Rabs V + 0 * Rabs V + (3 * eta * al + eta)) by (intros; lra).
-    pose proof (norm4_comb _ _ _ _ U0 U1 U2 U3 U0 U1 U2 U3 (K * al) 0 _ HK (Rle_refl 0) Hd
+  - assert (Z : forall x V, Rabs x <= kk * Rabs V + 3 * eta * al + eta ->
+                Rabs x <= kk * Rabs V + 0 * Rabs V + (3 * eta * al + eta)) by (intros; lra).
+    pose proof (norm4_comb _ _ _ _ U0 U1 U2 U3 U0 U1 U2 U3 kk 0 _ HK (Rle_refl 0) Hd
                   (Z _ _ HP0) (Z _ _ HP1) (Z _ _ HP2) (Z _ _ HP3)) as N4.
     rewrite HU in N4.
-    unfold K in *. lra.
-  - (* The rejection: one more rounding, of a_i - p_i. *)
+    unfold kk, A, B in *. lra.
+  - (* The rejection: one more rounding, of a_i - p_i. Its part relative
+       to |T| and its rounding relative to |R| add as the sides of a
+       right angle: |T|^2 + |R|^2 = |a|^2. *)
     set (R0 := a0 - T * b0); set (R1 := a1 - T * b1); set (R2 := a2 - T * b2); set (R3 := a3 - T * b3).
-    assert (HR : n4 R0 R1 R2 R3 <= al).
+    assert (HR : Rabs TT * Rabs TT + n4 R0 R1 R2 R3 * n4 R0 R1 R2 R3 <= al * al).
     { assert (E : R0 * R0 + R1 * R1 + R2 * R2 + R3 * R3
                   = (a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3) - TT * TT).
       { unfold R0, R1, R2, R3. rewrite !HP. fold U0 U1 U2 U3.
@@ -359,11 +390,10 @@ Proof.
           with ((a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3) - 2 * TT * (a0 * U0 + a1 * U1 + a2 * U2 + a3 * U3)
                 + TT * TT * (U0 * U0 + U1 * U1 + U2 * U2 + U3 * U3)) by ring.
         rewrite SU'. change (a0 * U0 + a1 * U1 + a2 * U2 + a3 * U3) with TT. ring. }
-      unfold n4 at 1. rewrite E. unfold al. rewrite <- (sqrt_square (n4 a0 a1 a2 a3)) by apply n4_pos.
-      apply sqrt_le_1_alt. rewrite n4_sq. pose proof (Rle_0_sqr TT). unfold Rsqr in *. lra. }
-    assert (Hr : forall a p P Ub, Rabs (p - P) <= K * al * Rabs Ub + 3 * eta * al + eta ->
+      rewrite n4_sq, E, sq_abs. unfold al. rewrite n4_sq. lra. }
+    assert (Hr : forall a p P Ub, Rabs (p - P) <= kk * Rabs Ub + 3 * eta * al + eta ->
                    Rabs (rnd (a - p) - (a - P))
-                   <= ((1 + u) * (K * al)) * Rabs Ub + u * Rabs (a - P)
+                   <= ((1 + u) * kk) * Rabs Ub + u * Rabs (a - P)
                       + ((1 + u) * (3 * eta * al + eta) + eta)).
     { intros a p P Ub Hpp.
       pose proof (rnd_err (a - p)) as R.
@@ -372,20 +402,21 @@ Proof.
       assert (Rabs (a - p) <= Rabs (a - P) + Rabs (p - P)).
       { replace (a - p) with ((a - P) + - (p - P)) by ring.
         pose proof (Rabs_triang (a - P) (- (p - P))). rewrite Rabs_Ropp in *. lra. }
-      assert (u * Rabs (a - p) <= u * (Rabs (a - P) + (K * al * Rabs Ub + 3 * eta * al + eta)))
+      assert (u * Rabs (a - p) <= u * (Rabs (a - P) + (kk * Rabs Ub + 3 * eta * al + eta)))
         by (apply Rmult_le_compat_l; lra).
       pose proof (Rabs_pos Ub). lra. }
     assert (Hd2 : 0 <= (1 + u) * (3 * eta * al + eta) + eta) by nra.
-    assert (HK2 : 0 <= (1 + u) * (K * al)) by nra.
+    assert (HK2 : 0 <= (1 + u) * kk) by nra.
     pose proof (norm4_comb _ _ _ _ U0 U1 U2 U3 R0 R1 R2 R3 _ _ _ HK2 (Rlt_le _ _ Hu) Hd2
                   (Hr a0 p0 (T * b0) U0 HP0) (Hr a1 p1 (T * b1) U1 HP1)
                   (Hr a2 p2 (T * b2) U2 HP2) (Hr a3 p3 (T * b3) U3 HP3)) as N4.
     rewrite HU in N4.
-    assert (u * n4 R0 R1 R2 R3 <= u * al) by (apply Rmult_le_compat_l; lra).
+    assert (Hright : (1 + u) * B * Rabs TT + u * n4 R0 R1 R2 R3 <= 3.0441e-7 * al).
+    { apply right_angle; try (unfold B; rewrite Hu1; lra); try apply n4_pos; lra. }
     assert (2 * ((1 + u) * (3 * eta * al + eta) + eta) <= 1e-13 * al).
     { assert (eta * al <= 1e-44 * al) by (apply Rmult_le_compat_r; [lra|]; unfold eta; simpl; lra).
       rewrite Hu1. lra. }
-    unfold K, R0, R1, R2, R3 in *. rewrite Hu1 in *. lra.
+    unfold kk, A, R0, R1, R2, R3 in *. rewrite Hu1 in *. lra.
 Qed.
 
 Lemma ratio : forall x al c, 0 < al -> x <= c * al -> x / al <= c.
@@ -419,7 +450,7 @@ Theorem project4 : forall a0 a1 a2 a3 B0 B1 B2 B3 : R,
   let T := (a0 * b0 + a1 * b1 + a2 * b2 + a3 * b3) / (b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3) in
   Rmax (n4 (p0 - T * b0) (p1 - T * b1) (p2 - T * b2) (p3 - T * b3) / n4 a0 a1 a2 a3)
        (n4 (r0 - (a0 - T * b0)) (r1 - (a1 - T * b1))
-           (r2 - (a2 - T * b2)) (r3 - (a3 - T * b3)) / n4 a0 a1 a2 a3) <= 8.36e-7.
+           (r2 - (a2 - T * b2)) (r3 - (a3 - T * b3)) / n4 a0 a1 a2 a3) <= 7.83e-7.
 Proof.
   intros a0 a1 a2 a3 B0 B1 B2 B3 b0 b1 b2 b3 HS Ha.
   assert (Hpos : 0 < n4 a0 a1 a2 a3)

@@ -8,7 +8,7 @@
 # and to the law proofs/coq/project3_bound.v, whose rounded terms s, n,
 # u0..u2, t, p0..p2 and r0..r2 are this model's (checked by the same
 # test): the error vectors of p and r are at most 7.7584e-7 |a| and
-# 8.3545e-7 |a| long, on the domain of project4.g. Gappa proves only the
+# 7.8175e-7 |a| long, on the domain of project4.g. Gappa proves only the
 # bound below on the dot product, by intervals.
 #
 #! law - t - D in [-15b-24, 15b-24] |a.dot(u) - exact dot of a and u| for |a_i| <= 1, |b_i| <= 2, |b|^2 in [1, 4]

@@ -14,7 +14,7 @@
 # by the same test). The law proves what interval arithmetic cannot: that
 # the error vectors of p and r against the exact projection
 # (a . b / |b|^2) b and rejection are at most 7.7584e-7 |a| and
-# 8.3545e-7 |a| long, for |b|^2 in [1, 4] (every b after an exact scaling
+# 7.8175e-7 |a| long, for |b|^2 in [1, 4] (every b after an exact scaling
 # by a power of four, as in normalize.g) and |a| from 2^-100 up, where
 # the roundings near underflow are below 2^-50 |a|. Gappa bounds each
 # rounding by the half ulp of its range's top binade and adds the
