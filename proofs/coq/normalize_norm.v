@@ -12,7 +12,9 @@
    squares, average to at most 2^-24), the certificate's rewriting hints
    (identities, by ring and field), and the last step: each quotient's
    rounding is relative too, so the result's length is within 2^-24 of
-   the exact quotients' length sqrt(S) / n (norm4_upper, norm4_lower). *)
+   the exact quotients' length sqrt(S) / n (norm4_upper, norm4_lower).
+   The root's bound is a lemma of its own (normalize_root), on which the
+   projections' laws (project4_bound.v) build. *)
 (*! bound NORMALIZE_MAX_NORM_ERROR normalize_norm <= 2.391e-7 | |normalize(q)| - 1 | for every finite non-zero q *)
 Require Import Reals Psatz.
 Require Import Flocq.Core.Core.
@@ -22,7 +24,9 @@ Require Laws.normalize.
 
 Open Scope R_scope.
 
-Theorem normalize_norm : forall A B C D : R,
+(* The square root of the sum of the rounded squares, against the exact
+   norm: the certificate's goal, its hypothesis and hints proven. *)
+Lemma normalize_root : forall A B C D : R,
   let a := rnd A in
   let b := rnd B in
   let c := rnd C in
@@ -30,15 +34,11 @@ Theorem normalize_norm : forall A B C D : R,
   1 <= a * a + b * b + c * c + d * d <= 4 ->
   let s := rnd (rnd (rnd (rnd (a * a) + rnd (b * b)) + rnd (c * c)) + rnd (d * d)) in
   let n := rnd (sqrt s) in
-  let x := rnd (a / n) in
-  let y := rnd (b / n) in
-  let z := rnd (c / n) in
-  let w := rnd (d / n) in
-  Rabs (sqrt (x * x + y * y + z * z + w * w) - 1) <= 2.391e-7.
+  let N := sqrt (a * a + b * b + c * c + d * d) in
+  -0x1.81p-23 <= (n - N) / N <= 0x1.81p-23.
 Proof.
-  intros A B C D a b c d HS s n x y z w.
+  intros A B C D a b c d HS s n N.
   set (S := a * a + b * b + c * c + d * d) in *.
-  set (N := sqrt S).
   assert (HN : 1 <= N).
   { unfold N. rewrite <- sqrt_1. apply sqrt_le_1_alt. lra. }
   (* The rounded squares. *)
@@ -61,25 +61,46 @@ Proof.
     apply abs_split in Ea; apply abs_split in Eb; apply abs_split in Ec; apply abs_split in Ed.
     apply abs_join. unfold T, S. lra. }
   (* The certificate: (n - N) / N within 0x1.81p-23. *)
-  assert (Hroot : -0x1.81p-23 <= (n - N) / N <= 0x1.81p-23).
-  { apply Classical_Prop.NNPP; intro Hn.
-    refine (Laws.normalize.l1 A B C D _ _ _ _).
-    - ring.
-    - ring.
-    - field. unfold S, a, b, c, d in HS. lra.
-    - unfold Laws.normalize.s1, Laws.normalize.s2, Laws.normalize.s3,
-        Laws.normalize.s4, Laws.normalize.s5, Laws.normalize.s6,
-        Laws.normalize.s7.
-      assert (HTS : -(u + 4 * eta) <= (T - S) / S <= u + 4 * eta).
-      { apply abs_split in HT. pose proof eta_pos. pose proof u_pos.
-        set (r := (T - S) / S).
-        assert (E : T - S = r * S) by (unfold r; field; lra).
-        rewrite E in HT. split; nra. }
-      assert (Heta : 4 * eta <= / 2 ^ 48) by (unfold eta; simpl; lra).
-      unfold T in HTS. unfold u in HTS.
-      pose proof (Sq a Ha); pose proof (Sq b Hb); pose proof (Sq c Hc); pose proof (Sq d Hd).
-      unfold S, a, b, c, d in *. gappa_nums. repeat split; try lra.
-      intro Hg. apply Hn. unfold n, s, N. lra. }
+  apply Classical_Prop.NNPP; intro Hn.
+  refine (Laws.normalize.l1 A B C D _ _ _ _).
+  - ring.
+  - ring.
+  - field. unfold S, a, b, c, d in HS. lra.
+  - unfold Laws.normalize.s1, Laws.normalize.s2, Laws.normalize.s3,
+      Laws.normalize.s4, Laws.normalize.s5, Laws.normalize.s6,
+      Laws.normalize.s7.
+    assert (HTS : -(u + 4 * eta) <= (T - S) / S <= u + 4 * eta).
+    { apply abs_split in HT. pose proof eta_pos. pose proof u_pos.
+      set (r := (T - S) / S).
+      assert (E : T - S = r * S) by (unfold r; field; lra).
+      rewrite E in HT. split; nra. }
+    assert (Heta : 4 * eta <= / 2 ^ 48) by (unfold eta; simpl; lra).
+    unfold T in HTS. unfold u in HTS.
+    pose proof (Sq a Ha); pose proof (Sq b Hb); pose proof (Sq c Hc); pose proof (Sq d Hd).
+    unfold S, a, b, c, d in *. gappa_nums. repeat split; try lra.
+    intro Hg. apply Hn. unfold n, s, N. lra.
+Qed.
+
+Theorem normalize_norm : forall A B C D : R,
+  let a := rnd A in
+  let b := rnd B in
+  let c := rnd C in
+  let d := rnd D in
+  1 <= a * a + b * b + c * c + d * d <= 4 ->
+  let s := rnd (rnd (rnd (rnd (a * a) + rnd (b * b)) + rnd (c * c)) + rnd (d * d)) in
+  let n := rnd (sqrt s) in
+  let x := rnd (a / n) in
+  let y := rnd (b / n) in
+  let z := rnd (c / n) in
+  let w := rnd (d / n) in
+  Rabs (sqrt (x * x + y * y + z * z + w * w) - 1) <= 2.391e-7.
+Proof.
+  intros A B C D a b c d HS s n x y z w.
+  set (S := a * a + b * b + c * c + d * d) in *.
+  set (N := sqrt S).
+  assert (HN : 1 <= N).
+  { unfold N. rewrite <- sqrt_1. apply sqrt_le_1_alt. lra. }
+  assert (Hroot : -0x1.81p-23 <= (n - N) / N <= 0x1.81p-23) by exact (normalize_root A B C D HS).
   (* The exact quotients' length is N / n = 1 / (1 + (n - N) / N). *)
   set (dl := (n - N) / N) in Hroot.
   assert (Hn : n = N * (1 + dl)) by (unfold dl; field; lra).

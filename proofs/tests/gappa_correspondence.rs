@@ -1446,3 +1446,57 @@ fn inverse_of_matrix4_is_matrix4_inverse_g() {
     // most draws hold an infinity, a NaN or an entry beyond the limits.
     assert!(seen > DRAWS / 8, "{seen} invertible draws");
 }
+
+/// `project_onto` and `reject_from` of `Cvec4` and `Cvec3` are project4.g
+/// and project3.g (and the laws' terms are the models'), where
+/// `scale_for_squares` takes the branch without rescaling: the model's
+/// sum of squares `s` in [2^-100, f32::MAX]. The other branches scale `b`
+/// by a power of two first (normalize_is_normalize_g_in_each_branch), and
+/// a zero, infinite or NaN `b` gives NaN.
+#[test]
+fn projections_are_project4_g_and_project3_g() {
+    let (Some(m4), Some(m3)) = (model("project4", Code::F32), model("project3", Code::F32)) else {
+        return;
+    };
+    assert_eq!(m4.inputs, ["a0", "a1", "a2", "a3", "b0", "b1", "b2", "b3"]);
+    assert_eq!(m3.inputs, ["a0", "a1", "a2", "b0", "b1", "b2"]);
+    law_terms_are_the_models("project4_bound", &m4);
+    law_terms_are_the_models("project3_bound", &m3);
+    let unscaled = |s: f64| (2f64.powi(-100)..=f64::from(f32::MAX)).contains(&s);
+    let mut seen = [0usize; 2];
+    for (i, mut d) in draws() {
+        let mut v: [f32; 8] = core::array::from_fn(|_| component(&mut d));
+        if i % 3 == 0 {
+            // b nearly along a, where the projection is most of a.
+            for k in 0..4 {
+                v[4 + k] = v[k] * 3.0 + d.uniform(-1e-3, 1e-3);
+            }
+        }
+        let out = m4.run(&v.map(f64::from));
+        if unscaled(out["s"]) {
+            seen[0] += 1;
+            let a = rigtform::Cvec4::new(v[0], v[1], v[2], v[3]);
+            let b = rigtform::Cvec4::new(v[4], v[5], v[6], v[7]);
+            let (p, r) = (a.project_onto(b).to_array(), a.reject_from(b).to_array());
+            for k in 0..4 {
+                check(&m4, &out, &format!("p{k}"), p[k], &v);
+                check(&m4, &out, &format!("r{k}"), r[k], &v);
+            }
+        }
+        let w = [v[0], v[1], v[2], v[4], v[5], v[6]];
+        let out = m3.run(&w.map(f64::from));
+        if unscaled(out["s"]) {
+            seen[1] += 1;
+            let (a, b) = (Cvec3::new(w[0], w[1], w[2]), Cvec3::new(w[3], w[4], w[5]));
+            let (p, r) = (a.project_onto(b), a.reject_from(b));
+            for (k, (p, r)) in [(p.x, r.x), (p.y, r.y), (p.z, r.z)].into_iter().enumerate() {
+                check(&m3, &out, &format!("p{k}"), p, &w);
+                check(&m3, &out, &format!("r{k}"), r, &w);
+            }
+        }
+    }
+    assert!(
+        seen.iter().all(|&s| s > DRAWS / 2),
+        "unscaled draws: {seen:?}"
+    );
+}

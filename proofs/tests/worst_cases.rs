@@ -1,7 +1,8 @@
 //! Searches for the worst cases of the norm and rotation laws, of the
 //! product's angle (`product_angle_search`), of the vector sampler's
-//! bound (`vector_sampler_search`) and of `RigTForm`'s inverse identities
-//! (`rigid_inverse_search`): from seeded
+//! bound (`vector_sampler_search`), of `RigTForm`'s inverse identities
+//! (`rigid_inverse_search`) and of the projections
+//! (`projection_search`): from seeded
 //! starting points, each climbs towards the inputs with the largest error,
 //! changing one input's last bits at a time (`climb`), or one or two
 //! inputs' (`climb_wide`), and keeping a step only if it makes the error
@@ -1081,4 +1082,117 @@ fn deep_matrix4_inverse_search() {
         "INVERSE_MAX_REL_ERROR",
         INVERSE_MAX_REL_ERROR,
     );
+}
+
+/// The errors of `project_onto` and `reject_from` against the exact
+/// projection `(a . b / |b|^2) b` of the same f32 vectors and its
+/// rejection `a - P`, relative to `|a|`, as `PROJECT_MAX_REL_ERROR`
+/// measures them: `Cvec3` for `N = 6` (`a` the first three inputs, `b` the
+/// last three), `Cvec4` for `N = 8`. Both 0 where `a` or `b` is zero or a
+/// result is not finite. The exact values are f64: the products of f32
+/// values are exact there, and the sums and the quotient round by about
+/// 1e-16, far below the errors sought.
+fn projection_errors<const N: usize>(v: [f32; N]) -> [f64; 2] {
+    let k = N / 2;
+    let (p, r) = if N == 6 {
+        let a = Cvec3::new(v[0], v[1], v[2]);
+        let b = Cvec3::new(v[3], v[4], v[5]);
+        let (p, r) = (a.project_onto(b), a.reject_from(b));
+        ([p.x, p.y, p.z, 0.0], [r.x, r.y, r.z, 0.0])
+    } else {
+        let a = rigtform::Cvec4::new(v[0], v[1], v[2], v[3]);
+        let b = rigtform::Cvec4::new(v[4], v[5], v[6], v[7]);
+        (a.project_onto(b).to_array(), a.reject_from(b).to_array())
+    };
+    let a: Vec<f64> = v[..k].iter().map(|&c| f64::from(c)).collect();
+    let b: Vec<f64> = v[k..].iter().map(|&c| f64::from(c)).collect();
+    let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(x, y)| x * y).sum::<f64>();
+    let (aa, bb) = (dot(&a, &a), dot(&b, &b));
+    let finite = p.iter().chain(&r).all(|c| c.is_finite());
+    if aa == 0.0 || bb == 0.0 || !finite {
+        return [0.0; 2];
+    }
+    let q = dot(&a, &b) / bb;
+    let (mut ep, mut er) = (0f64, 0f64);
+    for i in 0..k {
+        let exact = q * b[i];
+        ep += (f64::from(p[i]) - exact).powi(2);
+        er += (f64::from(r[i]) - (a[i] - exact)).powi(2);
+    }
+    [ep.sqrt() / aa.sqrt(), er.sqrt() / aa.sqrt()]
+}
+
+/// The largest errors of `project_onto` and `reject_from` that `climbs`
+/// climbs each find, for `N` inputs as [`projection_errors`]: from random
+/// pairs with components in [-1, 1], from pairs near parallel (`b` along
+/// `a`, up to 1e-3 off, at any length and either way) and from pairs near
+/// orthogonal (`b` across `a`, up to 1e-3 off), a third each; each climbs
+/// on each of the two errors.
+fn projection_search<const N: usize>(climbs: usize, seed: u64) -> [f64; 2] {
+    let k = N / 2;
+    let mut d = Draws::new(seed);
+    let mut found = [0f64; 2];
+    for c in 0..climbs {
+        let mut start: [f32; N] = core::array::from_fn(|_| d.uniform(-1.0, 1.0));
+        let off = d.uniform(-1e-3, 1e-3);
+        let scale = d.uniform(-4.0, 4.0);
+        match c % 3 {
+            1 => {
+                for i in 0..k {
+                    start[k + i] = (start[i] + off * start[k + i]) * scale;
+                }
+            }
+            2 => {
+                // b minus its part along a, plus a little of a.
+                let (a, b) = (&start[..k], &start[k..]);
+                let ab: f32 = a.iter().zip(b).map(|(x, y)| x * y).sum();
+                let aa: f32 = a.iter().map(|x| x * x).sum();
+                let across: Vec<f32> = (0..k).map(|i| b[i] - ab / aa * a[i] + off * a[i]).collect();
+                start[k..].copy_from_slice(&across);
+            }
+            _ => {}
+        }
+        for (i, f) in found.iter_mut().enumerate() {
+            let (_, e) = climb(&mut d, start, 400, &|x| projection_errors(x)[i]);
+            *f = f.max(e);
+        }
+    }
+    found
+}
+
+/// The projections' searches, `climbs` climbs each for `Cvec3` and
+/// `Cvec4`, against `PROJECT_MAX_REL_ERROR`.
+fn projections_within_their_constant(climbs: usize) {
+    use rigtform::accuracy::PROJECT_MAX_REL_ERROR;
+    let three = projection_search::<6>(climbs, 19);
+    let four = projection_search::<8>(climbs, 23);
+    for (what, found) in [
+        ("Cvec3::project_onto, relative to |self|", three[0]),
+        ("Cvec3::reject_from, relative to |self|", three[1]),
+        ("Cvec4::project_onto, relative to |self|", four[0]),
+        ("Cvec4::reject_from, relative to |self|", four[1]),
+    ] {
+        println!("{what}: {found:.4e} ({climbs} climbs)");
+    }
+    let worst = three.into_iter().chain(four).fold(0f64, f64::max);
+    within(
+        "project_onto and reject_from",
+        worst,
+        "PROJECT_MAX_REL_ERROR",
+        PROJECT_MAX_REL_ERROR,
+    );
+}
+
+#[test]
+fn projections_found_stay_within_their_constant() {
+    // A projection whose exact value is known: (3, 4, 0) onto the x axis.
+    let e = projection_errors([3.0, 4.0, 0.0, 2.0, 0.0, 0.0]);
+    assert_eq!(e, [0.0, 0.0]);
+    projections_within_their_constant(300);
+}
+
+#[test]
+#[ignore = "seconds in release: the search the constant's doc quotes"]
+fn deep_projection_search() {
+    projections_within_their_constant(100_000);
 }

@@ -24,7 +24,9 @@ macro_rules! lengths {
             /// # Accuracy
             ///
             /// Within [`accuracy::PROJECT_MAX_REL_ERROR`](crate::accuracy::PROJECT_MAX_REL_ERROR)
-            /// times `|self|` of the exact projection of the f32 inputs.
+            /// times `|self|` of the exact projection of the f32 inputs
+            /// (proven, for `|self|` from 2^-100; below, each rounding near
+            /// underflow may add 2^-150).
             ///
             /// ```
             #[doc = $crate::vec::example_uses!($t)]
