@@ -11,6 +11,7 @@ use rigtform_testkit as testkit;
 use nalgebra as na;
 use rigtform::accuracy;
 use rigtform::{Cvec3, EulerRot, Matrix4, Quat};
+use rigtform_proofs::reference::leibniz_expansion;
 use testkit::{angle_error, draw_count, slerp64, to_f64, Draws, Worst};
 
 fn norm_error(q: Quat) -> f64 {
@@ -233,40 +234,6 @@ fn normalize_is_within_its_bound_from_subnormal_to_huge() {
     ulps.check(2.0); // the 2 ulp that Quat::norm and Cvec3::norm document
 }
 
-/// The sum of the magnitudes of the 24 products of the determinant's
-/// expansion of a 4x4 matrix (column-major), one entry of each row and
-/// column: what `DETERMINANT_MAX_REL_ERROR` is relative to.
-fn expansion_terms(m: &[f32; 16]) -> f64 {
-    let mut total = 0.0;
-    for r0 in 0..4 {
-        for r1 in (0..4).filter(|r| *r != r0) {
-            for r2 in (0..4).filter(|r| *r != r0 && *r != r1) {
-                let r3 = 6 - r0 - r1 - r2;
-                let entries = [m[r0], m[4 + r1], m[8 + r2], m[12 + r3]];
-                total += entries.iter().map(|e| f64::from(*e).abs()).product::<f64>();
-            }
-        }
-    }
-    total
-}
-
-/// The sum of the magnitudes of the six products of a 3x3 determinant's
-/// expansion: for a cofactor of a 4x4 matrix, what an entry of its
-/// inverse is relative to, with the determinant's cancellation.
-fn cofactor_terms(s: &na::Matrix3<f64>) -> f64 {
-    [
-        (0, 1, 2),
-        (0, 2, 1),
-        (1, 0, 2),
-        (1, 2, 0),
-        (2, 0, 1),
-        (2, 1, 0),
-    ]
-    .iter()
-    .map(|&(i, j, k)| (s[(0, i)] * s[(1, j)] * s[(2, k)]).abs())
-    .sum()
-}
-
 #[test]
 fn inverse_of_general_matrices_is_within_its_bound() {
     // Random 4x4 matrices with every entry in [-1, 1] (projective ones, not
@@ -282,7 +249,7 @@ fn inverse_of_general_matrices_is_within_its_bound() {
     for _ in 0..draw_count() / 4 {
         let m: [f32; 16] = core::array::from_fn(|_| draws.uniform(-1.0, 1.0) as f32);
         let m64 = na::Matrix4::from_column_slice(&m.map(f64::from));
-        let (det64, total) = (m64.determinant(), expansion_terms(&m));
+        let (det64, total) = (m64.determinant(), leibniz_expansion(&m.map(f64::from), 4).1);
         if total > 4096.0 * det64.abs() {
             continue;
         }
@@ -300,8 +267,9 @@ fn inverse_of_general_matrices_is_within_its_bound() {
                 let sub = m64.remove_row(col).remove_column(row);
                 let sign = if (row + col) % 2 == 0 { 1.0 } else { -1.0 };
                 let cofactor = sign * sub.determinant();
-                let scale =
-                    (cofactor_terms(&sub) + cofactor.abs() * total / det64.abs()) / det64.abs();
+                let scale = (leibniz_expansion(sub.as_slice(), 3).1
+                    + cofactor.abs() * total / det64.abs())
+                    / det64.abs();
                 let e = (f64::from(got[4 * col + row]) - cofactor / det64).abs();
                 error = error.max(e / scale);
             }

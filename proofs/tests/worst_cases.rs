@@ -27,6 +27,7 @@ use rigtform::accuracy::{
 };
 use rigtform::{Cvec3, Quat, RigTForm};
 use rigtform_proofs::draw::Draws;
+use rigtform_proofs::reference::leibniz_expansion;
 
 /// The four components in f64, w first.
 fn q64(q: Quat) -> [f64; 4] {
@@ -564,46 +565,6 @@ fn deep_product_angle_search() {
     );
 }
 
-/// The Leibniz expansion of the determinant of the `n` x `n` matrix `m`
-/// (column-major) in f64: the determinant and the sum of its products'
-/// magnitudes, the `T` that `DETERMINANT_MAX_REL_ERROR` and
-/// `MATRIX3_DETERMINANT_MAX_REL_ERROR` are relative to. A product of
-/// three or four f32 rounds in f64 by 2^-53 of itself, far below the
-/// errors sought.
-fn leibniz(m: &[f32], n: usize) -> (f64, f64) {
-    let mut perm: Vec<usize> = (0..n).collect();
-    let (mut det, mut total) = (0f64, 0f64);
-    // Heap's algorithm: every permutation once, the sign flipping at each swap.
-    let mut c = vec![0usize; n];
-    let mut sign = 1.0;
-    let mut visit = |perm: &[usize], sign: f64| {
-        let p: f64 = (0..n)
-            .map(|col| f64::from(m[col * n + perm[col]]))
-            .product();
-        det += sign * p;
-        total += p.abs();
-    };
-    visit(&perm, sign);
-    let mut i = 0;
-    while i < n {
-        if c[i] < i {
-            if i % 2 == 0 {
-                perm.swap(0, i);
-            } else {
-                perm.swap(c[i], i);
-            }
-            sign = -sign;
-            visit(&perm, sign);
-            c[i] += 1;
-            i = 0;
-        } else {
-            c[i] = 0;
-            i += 1;
-        }
-    }
-    (det, total)
-}
-
 /// `|det - exact| / T` for a matrix's f32 determinant (0 where `T` is 0
 /// or the determinant is not finite).
 fn determinant_error<const N: usize>(v: [f32; N]) -> f64 {
@@ -617,7 +578,7 @@ fn determinant_error<const N: usize>(v: [f32; N]) -> f64 {
             (rigtform::Matrix4::from_cols_array(&m).determinant(), 4)
         }
     };
-    let (exact, total) = leibniz(&v, n);
+    let (exact, total) = leibniz_expansion(&v.map(f64::from), n);
     if total == 0.0 || !got.is_finite() {
         return 0.0;
     }
@@ -665,7 +626,7 @@ fn determinants_within_their_constants(climbs: usize) {
 #[test]
 fn determinants_found_stay_within_their_constants() {
     // The expansion's magnitudes and sign, on a matrix whose terms are known.
-    let (det, total) = leibniz(&[2.0, 1.0, 0.0, 1.0, 3.0, 0.0, 0.0, 0.0, 4.0], 3);
+    let (det, total) = leibniz_expansion(&[2.0, 1.0, 0.0, 1.0, 3.0, 0.0, 0.0, 0.0, 4.0], 3);
     assert_eq!((det, total), (20.0, 28.0));
     determinants_within_their_constants(600);
 }
@@ -767,7 +728,7 @@ fn polar_search(climbs: usize, seed: u64) -> [f64; 3] {
 /// 0 outside the constant's domain (`T` above 4096 `|D|`) or where there
 /// is no inverse.
 fn matrix3_inverse_error(v: [f32; 9]) -> f64 {
-    let (det, total) = leibniz(&v, 3);
+    let (det, total) = leibniz_expansion(&v.map(f64::from), 3);
     if total > 4096.0 * det.abs() {
         return 0.0;
     }
@@ -1000,7 +961,7 @@ fn deep_rigid_inverse_search() {
 /// outside the constant's domain (`T` above 4096 `|D|`) or where there is
 /// no inverse.
 fn matrix4_inverse_error(v: [f32; 16]) -> f64 {
-    let (det, total) = leibniz(&v, 4);
+    let (det, total) = leibniz_expansion(&v.map(f64::from), 4);
     if total > 4096.0 * det.abs() {
         return 0.0;
     }
@@ -1014,11 +975,15 @@ fn matrix4_inverse_error(v: [f32; 16]) -> f64 {
             // Entry (row, col) of the inverse is the cofactor of the
             // matrix's entry (col, row) over the determinant: the matrix
             // without column `row` and row `col`, column-major.
-            let sub: Vec<f32> = (0..4)
+            let sub: Vec<f64> = (0..4)
                 .filter(|&c| c != row)
-                .flat_map(|c| (0..4).filter(|&r| r != col).map(move |r| v[4 * c + r]))
+                .flat_map(|c| {
+                    (0..4)
+                        .filter(|&r| r != col)
+                        .map(move |r| f64::from(v[4 * c + r]))
+                })
                 .collect();
-            let (minor, terms) = leibniz(&sub, 3);
+            let (minor, terms) = leibniz_expansion(&sub, 3);
             let cofactor = if (row + col) % 2 == 0 { minor } else { -minor };
             let scale = (terms + cofactor.abs() * total / det.abs()) / det.abs();
             let error = (f64::from(got[4 * col + row]) - cofactor / det).abs();

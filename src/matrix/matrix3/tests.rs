@@ -35,17 +35,7 @@ fn inverse_and_determinant_are_within_their_bounds_of_nalgebra_in_f64() {
         // The determinant's error, relative to the sum of its expansion's
         // magnitudes (the bound's measure, which needs no condition).
         let c = m.to_cols_array().map(f64::from);
-        let terms: f64 = [
-            (0, 1, 2),
-            (0, 2, 1),
-            (1, 0, 2),
-            (1, 2, 0),
-            (2, 0, 1),
-            (2, 1, 0),
-        ]
-        .iter()
-        .map(|&(i, j, k)| (c[i] * c[3 + j] * c[6 + k]).abs())
-        .sum();
+        let terms = rigtform_proofs::reference::leibniz_expansion(&c, 3).1;
         let det = m64.determinant();
         let e_det = (f64::from(m.determinant()) - det).abs() / terms;
         // Each entry's error, relative to its minor's products and the
