@@ -106,41 +106,6 @@ impl Quat64 {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn pow_of_a_half_turn_is_a_quarter_turn() {
-        let q = Quat64::from(Quat::from_wxyz(0.0, 0.0, 0.0, 1.0)); // pi about z
-        let h = q.pow(0.5);
-        let quarter = core::f64::consts::FRAC_PI_4;
-        assert!((h.w - quarter.cos()).abs() < 1e-15 && (h.z - quarter.sin()).abs() < 1e-15);
-    }
-
-    #[test]
-    fn slerp_takes_the_short_way_and_angles_ignore_sign() {
-        let a = Quat64::from(Quat::IDENTITY);
-        let half_turn_x = |angle: f64| Quat64 {
-            w: libm::cos(angle / 2.0),
-            x: libm::sin(angle / 2.0),
-            y: 0.0,
-            z: 0.0,
-        };
-        let b = half_turn_x(0.5);
-        let minus_b = Quat64 {
-            w: -b.w,
-            x: -b.x,
-            y: -b.y,
-            z: -b.z,
-        }; // w < 0: same rotation
-        let mid = Quat64::slerp(a, minus_b, 0.5);
-        assert!((Quat64::angle_between(mid, a) - 0.25).abs() < 1e-12);
-        assert!(Quat64::angle_between(mid, half_turn_x(0.25)) < 1e-12);
-        assert!(Quat64::angle_between(minus_b, b) < 1e-12);
-    }
-}
-
 /// The Leibniz expansion of the determinant of the `n` x `n` matrix `m`
 /// (column-major, `n` from 1 to 4): the determinant and the sum of its
 /// `n!` products' magnitudes, the `T` that the determinants' and inverses'
@@ -186,4 +151,39 @@ pub fn leibniz_expansion(m: &[f64], n: usize) -> (f64, f64) {
         }
     }
     (det, total)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pow_of_a_half_turn_is_a_quarter_turn() {
+        let q = Quat64::from(Quat::from_wxyz(0.0, 0.0, 0.0, 1.0)); // pi about z
+        let h = q.pow(0.5);
+        let quarter = core::f64::consts::FRAC_PI_4;
+        assert!((h.w - quarter.cos()).abs() < 1e-15 && (h.z - quarter.sin()).abs() < 1e-15);
+    }
+
+    #[test]
+    fn slerp_takes_the_short_way_and_angles_ignore_sign() {
+        let a = Quat64::from(Quat::IDENTITY);
+        let half_turn_x = |angle: f64| Quat64 {
+            w: libm::cos(angle / 2.0),
+            x: libm::sin(angle / 2.0),
+            y: 0.0,
+            z: 0.0,
+        };
+        let b = half_turn_x(0.5);
+        let minus_b = Quat64 {
+            w: -b.w,
+            x: -b.x,
+            y: -b.y,
+            z: -b.z,
+        }; // w < 0: same rotation
+        let mid = Quat64::slerp(a, minus_b, 0.5);
+        assert!((Quat64::angle_between(mid, a) - 0.25).abs() < 1e-12);
+        assert!(Quat64::angle_between(mid, half_turn_x(0.25)) < 1e-12);
+        assert!(Quat64::angle_between(minus_b, b) < 1e-12);
+    }
 }
