@@ -10,7 +10,7 @@ use rigtform_testkit as testkit;
 
 use nalgebra as na;
 use rigtform::accuracy;
-use rigtform::{Cvec3, EulerRot, Matrix4, Quat};
+use rigtform::{Cvec3, EulerRot, Matrix3, Matrix4, Quat};
 use rigtform_proofs::reference::leibniz_expansion;
 use testkit::{angle_error, draw_count, slerp64, to_f64, Draws, Worst};
 
@@ -283,6 +283,65 @@ fn inverse_of_general_matrices_is_within_its_bound() {
     );
     det.check(accuracy::DETERMINANT_MAX_REL_ERROR);
     worst.check(accuracy::INVERSE_MAX_REL_ERROR);
+}
+
+#[test]
+fn inverse_and_determinant_of_3x3_matrices_are_within_their_bounds() {
+    // Random 3x3 matrices with every entry in [-1, 1] whose condition is at
+    // most 1e4, against nalgebra in f64. The determinant's error is relative
+    // to the sum of its expansion's magnitudes (the bound's measure, which
+    // needs no condition). Each entry of the inverse, where the expansion
+    // cancels by at most 2^12 (the bound's domain), is relative to its
+    // minor's products and the determinant's error carried through 1 / det.
+    let mut draws = Draws::new(27);
+    let mut worst = Worst::new("Matrix3::inverse: error per entry / (Am + |M| T / |det|) / |det|");
+    let mut det = Worst::new("Matrix3::determinant: error / sum of the expansion's terms");
+    let mut tested = 0;
+    for _ in 0..draw_count() {
+        let m: [f32; 9] = core::array::from_fn(|_| draws.uniform(-1.0, 1.0) as f32);
+        let c = m.map(f64::from);
+        let m64 = na::Matrix3::from_column_slice(&c);
+        let Some(inv64) = m64.try_inverse() else {
+            continue;
+        };
+        let cond = m64.norm() * inv64.norm();
+        if cond > 1e4 {
+            continue;
+        }
+        tested += 1;
+        let matrix = Matrix3::from_cols_array(&m);
+        let (det64, total) = (m64.determinant(), leibniz_expansion(&c, 3).1);
+        let got_det = f64::from(matrix.determinant());
+        det.see((got_det - det64).abs() / total, || format!("{m:?}"));
+        let inv = matrix
+            .inverse()
+            .expect("a matrix of condition <= 1e4 has an inverse");
+        let got = inv.to_cols_array();
+        if total <= 4096.0 * det64.abs() {
+            let mut error = 0f64;
+            for (i, j) in (0..3).flat_map(|i| (0..3).map(move |j| (i, j))) {
+                let (p, q) = (3 * ((i + 1) % 3), 3 * ((i + 2) % 3));
+                let (k, l) = ((j + 1) % 3, (j + 2) % 3);
+                let minor = c[p + k] * c[q + l] - c[p + l] * c[q + k];
+                let am = (c[p + k] * c[q + l]).abs() + (c[p + l] * c[q + k]).abs();
+                let scale = (am + minor.abs() * total / det64.abs()) / det64.abs();
+                let e = (f64::from(got[3 * j + i]) - minor / det64).abs();
+                error = error.max(e / scale);
+            }
+            worst.see(error, || format!("{m:?}"));
+        }
+        // glam's inverse (cofactors too) agrees, within both errors.
+        let g = glam::Mat3::from_cols_array(&m).inverse();
+        let size = g.to_cols_array().iter().fold(0f32, |a, b| a.max(b.abs()));
+        let ours = glam::Mat3::from_cols_array(&got);
+        assert!(g.abs_diff_eq(ours, 1e-5 * cond as f32 * size), "{m:?}");
+    }
+    assert!(
+        tested > draw_count() / 2,
+        "too few draws of condition <= 1e4: {tested}"
+    );
+    det.check(accuracy::MATRIX3_DETERMINANT_MAX_REL_ERROR);
+    worst.check(accuracy::MATRIX3_INVERSE_MAX_REL_ERROR);
 }
 
 #[test]

@@ -1,5 +1,6 @@
-//! Matrix3's laws: products, transposes and conversions against glam,
-//! inverses and determinants against nalgebra in f64.
+//! Matrix3's laws: products, transposes and conversions against glam.
+//! Its inverse and determinant are checked against nalgebra in f64 in
+//! tests/differential.rs.
 
 use super::*;
 use crate::Matrix4;
@@ -7,71 +8,6 @@ use rand::{Rng, SeedableRng};
 
 fn to_glam(m: Matrix3) -> glam::Mat3 {
     glam::Mat3::from_cols_array(&m.to_cols_array())
-}
-
-fn to_f64(m: Matrix3) -> nalgebra::Matrix3<f64> {
-    nalgebra::Matrix3::from_column_slice(&m.to_cols_array().map(f64::from))
-}
-
-use crate::test_draws::count as draws;
-
-#[test]
-fn inverse_and_determinant_are_within_their_bounds_of_nalgebra_in_f64() {
-    use crate::accuracy::{MATRIX3_DETERMINANT_MAX_REL_ERROR, MATRIX3_INVERSE_MAX_REL_ERROR};
-    let mut rng = rand::rngs::StdRng::seed_from_u64(27);
-    let (mut worst_inv, mut worst_det, mut seen) = (0f64, 0f64, 0);
-    for _ in 0..draws() {
-        let m = Matrix3::from_cols_array(&core::array::from_fn(|_| rng.random_range(-1.0..=1.0)));
-        let m64 = to_f64(m);
-        let Some(inv64) = m64.try_inverse() else {
-            continue;
-        };
-        let cond = m64.norm() * inv64.norm();
-        if cond > 1e4 {
-            continue;
-        }
-        seen += 1;
-        let inv = m.inverse().expect("invertible");
-        // The determinant's error, relative to the sum of its expansion's
-        // magnitudes (the bound's measure, which needs no condition).
-        let c = m.to_cols_array().map(f64::from);
-        let terms = rigtform_proofs::reference::leibniz_expansion(&c, 3).1;
-        let det = m64.determinant();
-        let e_det = (f64::from(m.determinant()) - det).abs() / terms;
-        // Each entry's error, relative to its minor's products and the
-        // determinant's error carried through 1 / det, where the
-        // expansion cancels by at most 2^12 (the bound's domain).
-        let got = inv.to_cols_array();
-        let mut e_inv = 0f64;
-        if terms <= 4096.0 * det.abs() {
-            for (i, j) in (0..3).flat_map(|i| (0..3).map(move |j| (i, j))) {
-                let (p, q) = (3 * ((i + 1) % 3), 3 * ((i + 2) % 3));
-                let (k, l) = ((j + 1) % 3, (j + 2) % 3);
-                let minor = c[p + k] * c[q + l] - c[p + l] * c[q + k];
-                let am = (c[p + k] * c[q + l]).abs() + (c[p + l] * c[q + k]).abs();
-                let scale = (am + minor.abs() * terms / det.abs()) / det.abs();
-                let error = (f64::from(got[3 * j + i]) - minor / det).abs();
-                e_inv = e_inv.max(error / scale);
-            }
-        }
-        worst_inv = worst_inv.max(e_inv);
-        worst_det = worst_det.max(e_det);
-        assert!(
-            e_inv <= f64::from(MATRIX3_INVERSE_MAX_REL_ERROR),
-            "{m:?}: {e_inv:e}"
-        );
-        assert!(
-            e_det <= f64::from(MATRIX3_DETERMINANT_MAX_REL_ERROR),
-            "{m:?}: {e_det:e}"
-        );
-        // glam's inverse (cofactors too) agrees, within both errors.
-        let g = to_glam(m).inverse();
-        let size = g.to_cols_array().iter().fold(0f32, |a, b| a.max(b.abs()));
-        assert!(g.abs_diff_eq(to_glam(inv), 1e-5 * cond as f32 * size));
-    }
-    std::println!(
-        "Matrix3 over {seen} draws (condition <= 1e4): inverse {worst_inv:.3e} (per entry, relative to its minor and the determinant's cancellation), determinant {worst_det:.3e} (relative to the expansion's terms)"
-    );
 }
 
 #[test]
