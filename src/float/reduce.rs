@@ -84,9 +84,50 @@ pub(super) fn reduce_by_quarter_turns(a: f32) -> (u32, f32, f32) {
     (quadrant as u32, r, t)
 }
 
+/// Checks what the kernel's polynomials assume of a reduced argument (the
+/// models `sin_poly_tail.g` and `cos_poly_tail.g`): `|r| <= PIO4_HI`, `t`
+/// at most `2^-24 |r|` (half an ulp of `r`), and `r` the f32 nearest
+/// `r + t` (the Fast2Sum's head).
+#[cfg(test)]
+pub(super) fn check_reduced_range(a: f32) {
+    use super::head_tail::PIO4_HI;
+    let (_, r, t) = reduce_by_quarter_turns(a);
+    assert!(r.abs() <= PIO4_HI, "{a:e}: |r| = {r:e} above PIO4_HI");
+    assert!(
+        f64::from(t).abs() <= f64::from(r).abs() * 2f64.powi(-24),
+        "{a:e}: the tail {t:e} is above 2^-24 |r| (r = {r:e})"
+    );
+    assert_eq!((f64::from(r) + f64::from(t)) as f32, r, "{a:e}: r, t");
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::float::sin_cos::THREE_PI_4;
+
+    /// The reduced argument's range at its extremes: the f32 next to odd
+    /// multiples of pi/4 (where `|r|` is nearest pi/4), 3 pi/4 (the first
+    /// argument of the reduced path) and the largest f32.
+    #[test]
+    fn reduced_arguments_stay_within_a_quarter_turn_with_a_small_tail() {
+        let near = |x: f32| {
+            [
+                f32::from_bits(x.to_bits() - 1),
+                x,
+                f32::from_bits(x.to_bits() + 1),
+            ]
+        };
+        let odd_eighths = (3..=4001u32)
+            .step_by(2)
+            .chain([(1 << 20) + 1, (1 << 30) + 1, 1_000_000_007])
+            .map(|k| (f64::from(k) * core::f64::consts::FRAC_PI_4) as f32);
+        let ends = [THREE_PI_4, f32::MAX];
+        for x in odd_eighths.chain(ends).flat_map(near) {
+            if x >= THREE_PI_4 && x.is_finite() {
+                check_reduced_range(x);
+            }
+        }
+    }
 
     /// The quadrant and the reduced angle of a few arguments worked out in
     /// f64 (exact enough below 2^20, where f64's pi/2 is off by far less
