@@ -834,6 +834,58 @@ fn cosine_polynomial_is_cos_poly_g() {
     }
 }
 
+/// sin_poly_tail.g and cos_poly_tail.g: both polynomials with a tail, as
+/// the kernel evaluates them for every argument in [0, 3 pi/4]: `(a, 0)`
+/// up to pi/4 (sine and cosine), and beyond it the head and tail of
+/// `pi/2 - a`, computed here as the kernel does, whose cosine is the
+/// kernel's sine and whose sine its cosine (random arguments, raw bit
+/// patterns of the range, and its ends).
+#[test]
+fn polynomials_with_their_tail_are_sin_and_cos_poly_tail_g() {
+    let (Some(sin), Some(cos)) = (
+        model("sin_poly_tail", Code::F32),
+        model("cos_poly_tail", Code::F32),
+    ) else {
+        return;
+    };
+    assert_eq!(sin.inputs, ["r", "t"]);
+    assert_eq!(cos.inputs, ["r", "t"]);
+    let (quarter, half) = (core::f32::consts::FRAC_PI_4, core::f32::consts::FRAC_PI_2);
+    // pi/2 - FRAC_PI_2 rounded to f32, the kernel's PIO2_LO.
+    let half_lo = f32::from_bits(0xb33b_bd2e);
+    let three_quarters = 2.356_194_3f32;
+    let mut d = Draws::new(23);
+    let ends = [
+        0.0,
+        f32::from_bits(1),
+        f32::MIN_POSITIVE,
+        quarter,
+        f32::from_bits(quarter.to_bits() + 1),
+        half,
+        three_quarters,
+    ];
+    let drawn = (0..DRAWS).map(|i| {
+        if i % 2 == 0 {
+            d.uniform(0.0, three_quarters)
+        } else {
+            f32::from_bits(d.next_u32() % (three_quarters.to_bits() + 1))
+        }
+    });
+    for a in ends.into_iter().chain(drawn) {
+        let (s, c) = kani_kernels::sin_cos(a);
+        let ((r, t), (of_sin, of_cos)) = if a > quarter {
+            let head = half - a;
+            let r = head + half_lo;
+            ((r, (head - r) + half_lo), (c, s))
+        } else {
+            ((a, 0.0), (s, c))
+        };
+        let inputs = [f64::from(r), f64::from(t)];
+        check(&sin, &sin.run(&inputs), "y", of_sin, &[r, t]);
+        check(&cos, &cos.run(&inputs), "y", of_cos, &[r, t]);
+    }
+}
+
 /// sin_poly_hi.g, sin_poly_mid.g and sin_poly_low.g (one computation, its
 /// binades split among three models): the kernel's sine for every argument
 /// in [0, pi/4], where it is the polynomial with the tail 0.
