@@ -1161,3 +1161,60 @@ fn projections_found_stay_within_their_constant() {
 fn deep_projection_search() {
     projections_within_their_constant(100_000);
 }
+
+/// The proven relative errors of the sine and cosine polynomials with
+/// their tail (`sin_poly_tail.g`, `cos_poly_tail.g`, the `#! law` goals).
+const SIN_POLY_TAIL_LAW: f64 = 1.0e-7;
+const COS_POLY_TAIL_LAW: f64 = 8e-8;
+
+/// The largest relative errors of the kernel's sine and cosine polynomials
+/// against sin and cos of `r + t` (the exact sum of the head and tail they
+/// receive), over every `step`-th f32 `a` of [0, 3 pi/4]: `(a, 0)` up to
+/// pi/4, beyond it the head and tail of `pi/2 - a` as the kernel computes
+/// them, whose cosine is the kernel's sine. Measured in f64, where `r + t`
+/// is exact and sin and cos are within 2^-52.
+fn polynomial_tail_errors(step: usize) -> (f64, f64) {
+    let (quarter, half) = (core::f32::consts::FRAC_PI_4, core::f32::consts::FRAC_PI_2);
+    // pi/2 - FRAC_PI_2 rounded to f32, the kernel's PIO2_LO.
+    let half_lo = f32::from_bits(0xb33b_bd2e);
+    let three_quarters = 2.356_194_3f32;
+    let (mut sin_worst, mut cos_worst) = (0f64, 0f64);
+    for bits in (1..=three_quarters.to_bits()).step_by(step) {
+        let a = f32::from_bits(bits);
+        let (s, c) = rigtform::kani_kernels::sin_cos(a);
+        let ((r, t), (of_sin, of_cos)) = if a > quarter {
+            let head = half - a;
+            let r = head + half_lo;
+            ((r, (head - r) + half_lo), (c, s))
+        } else {
+            ((a, 0.0), (s, c))
+        };
+        let y = f64::from(r) + f64::from(t);
+        let rel = |got: f32, want: f64| ((f64::from(got) - want) / want).abs();
+        sin_worst = sin_worst.max(rel(of_sin, y.sin()));
+        cos_worst = cos_worst.max(rel(of_cos, y.cos()));
+    }
+    (sin_worst, cos_worst)
+}
+
+/// Fails unless the errors found stay within the proven laws, and the laws
+/// within 4 times what is found (a proof far above the worst case would
+/// say little).
+fn polynomial_tail_within_the_laws(step: usize) {
+    let (sin, cos) = polynomial_tail_errors(step);
+    println!("sin_poly(r, t), relative to sin(r + t): {sin:.4e} (law {SIN_POLY_TAIL_LAW:e})");
+    println!("cos_poly(r, t), relative to cos(r + t): {cos:.4e} (law {COS_POLY_TAIL_LAW:e})");
+    assert!(sin <= SIN_POLY_TAIL_LAW && cos <= COS_POLY_TAIL_LAW);
+    assert!(SIN_POLY_TAIL_LAW <= 4.0 * sin && COS_POLY_TAIL_LAW <= 4.0 * cos);
+}
+
+#[test]
+fn polynomials_with_their_tail_stay_within_their_laws() {
+    polynomial_tail_within_the_laws(997);
+}
+
+#[test]
+#[ignore = "a minute in release: every f32 of [0, 3 pi/4]"]
+fn every_polynomial_tail_within_its_law() {
+    polynomial_tail_within_the_laws(1);
+}
