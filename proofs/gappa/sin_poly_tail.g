@@ -18,8 +18,20 @@
 #   t is the rounding error of r, at most half an ulp of r, so |t| <=
 #   2^-24 |r|; |r| <= pi/4;
 # - beyond 3 pi/4: reduce_by_quarter_turns, |r| <= PIO4_HI and t the
-#   Fast2Sum tail of r, at most half an ulp of r (the step argued in
-#   docs/verification-proofs.md and tested in src/float/reduce.rs).
+#   Fast2Sum tail of r, at most half an ulp of r. Argued from the code
+#   (docs/verification-proofs.md; tested at the extremes in
+#   src/float/reduce.rs and for every f32 by exhaustive_kernel_sweep):
+#   rounding the 64-bit fraction of a turn to the nearest quarter turn
+#   leaves rest in [-2^61, 2^61); radians = floor(rest TWO_PI_FIXED /
+#   2^64) is in [-1811004864519280711, 1811004864519280709] units of
+#   2^-61 (shifted up by 12 bits and weighted 2^-12 below 2^49, still
+#   below 2^61); its bits 37 to 60 (with the sign) and 13 to 36 are
+#   integers below 2^24 in magnitude, converted exactly and weighted by
+#   powers of two, so high + low is radians truncated to a multiple of
+#   2^13 units, at most pi/4 + 8.6e-16 < PIO4_HI in magnitude, and r, its
+#   rounding, at most PIO4_HI; high is 0 or above low in magnitude, so
+#   sum_and_tail(high, low) is an exact Fast2Sum: r + t = high + low,
+#   |t| <= half an ulp of r <= 2^-24 |r|.
 # Negative r (the last two cases): sin_poly(-r, -t) = -sin_poly(r, t)
 # bit for bit (every rounding to nearest even is odd) and sin is odd, so
 # the relative error is the same as for (|r|, -t), which the domain holds.
