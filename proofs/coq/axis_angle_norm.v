@@ -172,7 +172,7 @@ Theorem axis_angle_norm : forall X Y Z Sin Cos s c : R,
   Rabs (s - Sin) <= 1.05e-7 * Rabs Sin ->
   Rabs (c - Cos) <= 1.05e-7 * Rabs Cos ->
   let q := rnd (rnd (rnd (rnd (x * x) + rnd (y * y)) + rnd (z * z)) + rnd (0 * 0)) in
-  let b := rnd (sqrt q) in
+  let b := rnd (sqrt (q)) in
   let kx := rnd (x / b) in
   let ky := rnd (y / b) in
   let kz := rnd (z / b) in
