@@ -1177,7 +1177,7 @@ fn axis_angle_deviation(v: [f32; 4]) -> f64 {
 /// f32::MAX / 4` (the branch without the closing `normalize`; 0 beyond it
 /// and where the result is not finite).
 fn pow_deviation(v: [f32; 5]) -> f64 {
-    if !(v[4].abs() <= f32::MAX / 4.0) {
+    if v[4].abs() > f32::MAX / 4.0 {
         return 0.0;
     }
     let q = Quat::from_wxyz(v[0], v[1], v[2], v[3]).pow(v[4]);
