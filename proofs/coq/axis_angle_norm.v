@@ -16,7 +16,7 @@
    For |alpha| > f32::MAX / 4, pow ends with normalize, whose norm
    normalize_norm.v bounds within 2.391e-7.
 
-   Hypothesis taken, not proven here: the sine and cosine kernel's
+   Taken as a hypothesis, not proven here: the sine and cosine kernel's
    relative errors, proven in sin_poly_*.g / cos_poly*.g: s = Sin (1 + es)
    and c = Cos (1 + ec) with |es|, |ec| <= 1.05e-7, Sin and Cos the exact
    sine and cosine of the kernel's f32 argument (so Sin^2 + Cos^2 = 1;
