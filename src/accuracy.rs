@@ -76,7 +76,7 @@ mod backend {
     pub const ATAN2_MAX_ABS_ERROR: f32 = 3.2e-7; // 2.667e-7 (every f32 quotient, near pi; the kernel is within 1.6 ulp)
     pub const SIN_COS_MAX_ABS_ERROR: f32 = 6.4e-8; // 5.760e-8 at 2.359356 (every f32 of [-10, 10])
     pub const TAN_MAX_REL_ERROR: f32 = 1.2e-7; // 7.745e-8 at 0.12439033 (every f32 of [0.0087, 1.5621])
-    pub const UNIT_NORM_ERROR: f32 = 3.5e-7; // 2.572e-7 (slerp, random pairs); 1.9720e-7 (a product, relative to |a| |b|, by search; 2.84e-7 proven)
+    pub const UNIT_NORM_ERROR: f32 = 3.5e-7; // 2.572e-7 (slerp, random pairs); 1.9720e-7 (a product, relative to |a| |b|, by search; 2.84e-7 proven); 2.4337e-7 (from_axis_angle, by search; 3.733e-7 proven given the kernel's relative errors)
     pub const POW_MAX_ANGLE_ERROR: f32 = 3.4e-7; // 2.580e-7 (pow), 2.725e-7 (to_axis_angle), 2.968e-7 (pow, search); 1.03e-6 proven given swept kernels
     pub const SLERP_MAX_ANGLE_ERROR: f32 = 5.2e-7; // 4.106e-7 (random pairs, alpha in [-1, 2])
     pub const FROM_SCALED_AXIS_MAX_REL_ERROR: f32 = 3.0e-7; // 2.426e-7
@@ -232,11 +232,14 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// Known: measured. For products, `proofs/coq/mul_norm.v` proves 2.84e-7
 /// (Coq, on the certificate of `proofs/gappa/mul.g`, relative to `|a| |b|`
 /// for inputs within 2^-20 of unit norm), and a search found 1.9720e-7
-/// (`proofs/tests/worst_cases.rs`); for `pow`, `proofs/gappa/pow_norm.g`
-/// proves 6.56e-7 given the sine and cosine kernel's swept 1.25 ulp
-/// (looser: the error vector's length bounds the norm's error). `slerp`
-/// and `from_axis_angle` have no model. The largest over random draws is
-/// 2.572e-7.
+/// (`proofs/tests/worst_cases.rs`); for `from_axis_angle` and for `pow`
+/// with `|alpha| <= f32::MAX / 4` (beyond, `pow` ends with `normalize`),
+/// `proofs/coq/axis_angle_norm.v` proves 3.733e-7 (Coq, on the terms of
+/// `proofs/gappa/axis_angle.g`), given the sine and cosine kernel's
+/// relative errors within 1.05e-7 (proven in `sin_poly_tail.g` and
+/// `cos_poly_tail.g`: 1.0e-7 and 8e-8; the libm backend is outside it), and a search found
+/// 2.4337e-7 (`from_axis_angle`) and 2.2764e-7 (`pow`). `slerp` has no
+/// model. The largest over random draws is 2.572e-7.
 pub const UNIT_NORM_ERROR: f32 = backend::UNIT_NORM_ERROR;
 /// `|norm - 1|` after a chain of 1,000,000 [`Quat::mul_renormalized`](crate::Quat::mul_renormalized)
 /// products cycling through 1,000 random rotations of up to 0.1 rad

@@ -756,23 +756,63 @@ fn pow_cases(m: &Model, width: usize, mut each: impl FnMut(Quat, f32, f32, f32, 
     );
 }
 
-/// pow_norm.g, on [`pow_cases`]. The model takes the kernel's sine and
-/// cosine as inputs; the result's bits are the library's `pow`.
+/// axis_angle.g, on [`pow_cases`] and on axes and angles drawn as
+/// [`component`]s and from [-1e4, 1e4] and [-7, 7]. The model takes the
+/// kernel's sine and cosine as inputs; the result's bits are the
+/// library's `pow` and `from_axis_angle`, and the terms of the norm's law
+/// (axis_angle_norm.v) are the model's.
 #[test]
-fn power_is_pow_norm_g() {
-    let Some(m) = model("pow_norm", Code::F32) else {
+fn axis_angle_and_power_are_axis_angle_g() {
+    let Some(m) = model("axis_angle", Code::F32) else {
         return;
     };
     assert_eq!(m.inputs, ["x", "y", "z", "s", "c"]);
+    law_terms_are_the_models("axis_angle_norm", &m);
     pow_cases(&m, 5, |q, alpha, _, s, c| {
         let v = [q.x, q.y, q.z, s, c];
         let out = m.run(&v.map(f64::from));
         let p = q.pow(alpha);
-        assert_eq!(p.w.to_bits(), c.to_bits(), "pow_norm: w for {q:?}, {alpha}");
+        assert_eq!(
+            p.w.to_bits(),
+            c.to_bits(),
+            "axis_angle: w for {q:?}, {alpha}"
+        );
         for (name, code) in [("rx", p.x), ("ry", p.y), ("rz", p.z)] {
             check(&m, &out, name, code, &v);
         }
     });
+    let mut kept = 0;
+    for (i, mut d) in draws() {
+        let axis: [f32; 3] = core::array::from_fn(|_| component(&mut d));
+        let angle = match i % 3 {
+            0 => d.f32_mixed(),
+            1 => d.uniform(-1e4, 1e4),
+            _ => d.uniform(-7.0, 7.0),
+        };
+        if !(angle.is_finite() && axis.iter().all(|a| a.is_finite())) {
+            continue;
+        }
+        let (s, c) = kani_kernels::sin_cos(angle * 0.5);
+        let v = [axis[0], axis[1], axis[2], s, c];
+        let out = m.run(&v.map(f64::from));
+        if !(2f64.powi(-100)..=f64::from(f32::MAX)).contains(&out["q"]) {
+            continue;
+        }
+        let r = Quat::from_axis_angle(Cvec3::new(axis[0], axis[1], axis[2]), angle);
+        assert_eq!(
+            r.w.to_bits(),
+            c.to_bits(),
+            "axis_angle: w for {axis:?}, {angle}"
+        );
+        for (name, code) in [("rx", r.x), ("ry", r.y), ("rz", r.z)] {
+            check(&m, &out, name, code, &v);
+        }
+        kept += 1;
+    }
+    assert!(
+        kept > DRAWS / 2,
+        "{kept} of {DRAWS} draws in the model's branch"
+    );
 }
 
 /// polar_angle.g, on [`pow_cases`]: `pow`'s vector part, `to_scaled_axis`
