@@ -39,6 +39,8 @@
    factors of the parts, a weighted average with weights Cos^2 and Sin^2
    that sum to 1, not a sum. The terms are those of
    proofs/gappa/axis_angle.g (the correspondence test). *)
+(*! given sin_poly_tail.g sine <= 1.05e-7 the sine polynomial's relative error with its tail *)
+(*! given cos_poly_tail.g cosine <= 1.05e-7 the cosine polynomial's relative error with its tail *)
 (*! looser UNIT_NORM_ERROR axis_angle_norm <= 3.733e-7 | |from_axis_angle(axis, angle)| - 1 | and | |q.pow(alpha)| - 1 | for |alpha| <= f32::MAX / 4, given the sine and cosine kernel's relative errors within 1.05e-7 (proven in sin_poly_tail.g / cos_poly_tail.g (1.0e-7 and 8e-8)) *)
 Require Import Reals Psatz.
 Require Import Flocq.Core.Core.

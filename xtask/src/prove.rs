@@ -683,15 +683,8 @@ pub fn prove_all() -> Result<()> {
     let work = tempfile::tempdir().context("a directory for the certificates")?;
     let mut proven = prove_in_parallel(&models, work.path())?;
     // The laws proven in Coq on the certificates just checked.
-    let stems: Vec<String> = proven
-        .iter()
-        .map(|p| p.model.trim_end_matches(".g").to_owned())
-        .collect();
-    proven.extend(laws::prove_laws(
-        &root.join("proofs/coq"),
-        work.path(),
-        &stems,
-    )?);
+    let laws = laws::prove_laws(&root.join("proofs/coq"), work.path(), &proven)?;
+    proven.extend(laws);
 
     let accuracy =
         std::fs::read_to_string(root.join("src/accuracy.rs")).context("src/accuracy.rs")?;

@@ -21,6 +21,12 @@
 //! constant then stays swept or measured), as a model's `#! looser` does. `VALUE` must not
 //! appear elsewhere in the statement (as a hypothesis), and the file must
 //! not admit anything.
+//!
+//! A law that takes another model's proven bound as a hypothesis (a
+//! kernel's error, which no certificate it requires states) says so in a
+//! line `(*! given MODEL WHAT <= VALUE what *)`: `MODEL` (a model of this
+//! run, `NAME.g`) must have a claim whose proven value is at most `VALUE`,
+//! and `VALUE` must appear in the law, or the run fails.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -122,6 +128,27 @@ fn parse_claim(line: &str) -> Result<(Claim, String)> {
     ))
 }
 
+/// Checks `given MODEL WHAT <= VALUE what`: the law takes `VALUE` (which
+/// it must contain) as a hypothesis, and `MODEL`, proven in this run, has
+/// a claim whose value is at most `VALUE`.
+fn check_given(text: &str, line: &str, models: &[Proven]) -> Result<()> {
+    let words: Vec<&str> = line.split_whitespace().collect();
+    let ["given", model, what, "<=", value, ..] = words[..] else {
+        bail!("`(*!{line}*)` is not `given MODEL WHAT <= VALUE what`");
+    };
+    let limit = number(value)?;
+    let Some(proven) = models.iter().find(|p| p.model == model) else {
+        bail!("it takes {what} <= {value} from {model}, which is not a model of this run");
+    };
+    if !proven.claims.iter().any(|c| c.value <= limit) {
+        bail!("it takes {what} <= {value} from {model}, whose claims prove no bound within it");
+    }
+    if text.matches(value).count() < 2 {
+        bail!("it takes {what} <= {value} from {model}, but {value} appears in no hypothesis");
+    }
+    Ok(())
+}
+
 /// The statement of `Theorem NAME :` in `text`: what lies between the
 /// colon and the `Proof.` after it.
 fn statement<'a>(text: &'a str, theorem: &str) -> Result<&'a str> {
@@ -218,7 +245,12 @@ fn check_axioms(work: &Path, stem: &str, theorem: &str) -> Result<()> {
 /// Compiles the library and every law of `dir` in `work`, where the
 /// certificates of this run are compiled (`models` names them), checks
 /// each law's claims, and returns them as proven.
-pub fn prove_laws(dir: &Path, work: &Path, models: &[String]) -> Result<Vec<Proven>> {
+pub fn prove_laws(dir: &Path, work: &Path, proven_models: &[Proven]) -> Result<Vec<Proven>> {
+    let models: Vec<String> = proven_models
+        .iter()
+        .map(|p| p.model.trim_end_matches(".g").to_owned())
+        .collect();
+    let models = models.as_slice();
     for name in LIBRARY {
         let library = dir.join(format!("{name}.v"));
         std::fs::copy(&library, work.join(format!("{name}.v")))
@@ -266,6 +298,10 @@ pub fn prove_laws(dir: &Path, work: &Path, models: &[String]) -> Result<Vec<Prov
         let mut claims = Vec::new();
         for line in text.lines().filter_map(|l| l.trim().strip_prefix("(*!")) {
             let line = line.trim_end().trim_end_matches("*)");
+            if line.trim_start().starts_with("given ") {
+                check_given(&text, line, proven_models).with_context(|| format!("{stem}.v"))?;
+                continue;
+            }
             let (claim, value) = parse_claim(line).with_context(|| format!("{stem}.v"))?;
             check_statement(&text, &claim, &value).with_context(|| format!("{stem}.v"))?;
             claims.push(claim);
@@ -316,6 +352,31 @@ mod tests {
         assert!(check_statement(LAW, &other, &value).is_err());
         let assumed = LAW.replace("0 <= x <= 1", "f x <= 2.5e-7");
         assert!(check_statement(&assumed, &claim, "2.5e-7").is_err());
+    }
+
+    #[test]
+    fn a_hypothesis_taken_from_a_model_must_be_what_it_proves() {
+        let kernel = Proven {
+            model: "k.g".into(),
+            claims: vec![Claim {
+                kind: "law".into(),
+                name: "-".into(),
+                quantity: "e".into(),
+                value: 1.0e-7,
+                text: String::new(),
+            }],
+            time: std::time::Duration::ZERO,
+            unchecked: false,
+        };
+        let law =
+            "(*! given k.g e <= 1.05e-7 the kernel *)\nTheorem t : e <= 1.05e-7 -> x <= 3e-7.\n";
+        let models = [kernel];
+        assert!(check_given(law, " given k.g e <= 1.05e-7 the kernel ", &models).is_ok());
+        let looser = law.replace("1.05e-7", "0.9e-7");
+        assert!(check_given(&looser, " given k.g e <= 0.9e-7 the kernel ", &models).is_err());
+        assert!(check_given(law, " given m.g e <= 1.05e-7 the kernel ", &models).is_err());
+        let unused = "(*! given k.g e <= 1.05e-7 the kernel *)\nTheorem t : x <= 3e-7.\n";
+        assert!(check_given(unused, " given k.g e <= 1.05e-7 the kernel ", &models).is_err());
     }
 
     #[test]
