@@ -241,6 +241,8 @@ pub mod kani_kernels {
     /// `coefficient_rest_f64.g` model.
     #[cfg(desktop64)]
     pub use crate::quat::{slerp_arc, slerp_coefficients, slerp_sinc};
+    /// slerp's f32 evaluation, on every target.
+    pub use crate::quat::slerp_in_f32;
 }
 
 /// The conditions of the contracts on the core operations, under Kani and
