@@ -6,7 +6,7 @@
    norm, | |q| / |a| - 1 | at most 5.975e-7 (the inputs' own norms carry
    through: at alpha = 1 the result is b's rotation at b's norm).
 
-   Hypothesis, not proven here: the sine kernel's result for phi in
+   Assumed, not proven here: the sine kernel's result for phi in
    (2^-12, pi/2] is within 1.05e-7 of sin(phi), relative (the sin_poly and
    cos_poly models bound the kernel), so that sin(phi) as computed lies in
    [2^-13, 1]: sin(2^-12) (1 - 1.05e-7) > 2^-13, and no f32 lies in
@@ -146,4 +146,48 @@ Proof.
     assert (X <= (1 + u) + 4 * eta).
     { apply Rmult_le_reg_r with B; [lra|]. nra. }
     rewrite Hu1 in *. lra.
+Qed.
+
+(* Relative to |a|, as UNIT_NORM_ERROR measures it, for a and b within
+   normalize's proven 2.391e-7 of unit norm: | |q| / |a| - 1 | at most
+   5.976e-7, nearly all of it the inputs' own norms (|b| / |a| is within
+   4.7821e-7 of 1). *)
+Theorem slerp_endpoint_norm_f32_unit : forall S0 S A0 A1 A2 A3 B0 B1 B2 B3 : R,
+  let s0 := rnd S0 in let s := rnd S in
+  let a0 := rnd A0 in let a1 := rnd A1 in let a2 := rnd A2 in let a3 := rnd A3 in
+  let b0 := rnd B0 in let b1 := rnd B1 in let b2 := rnd B2 in let b3 := rnd B3 in
+  s0 = 0 -> / 8192 <= s <= 1 ->
+  1 - 2.391e-7 <= sqrt (a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3) <= 1 + 2.391e-7 ->
+  1 - 2.391e-7 <= sqrt (b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3) <= 1 + 2.391e-7 ->
+  let r := rnd (1 / s) in
+  let c0 := rnd (s0 * r) in
+  let c1 := rnd (s * r) in
+  let q0 := rnd (rnd (c0 * a0) + rnd (c1 * b0)) in
+  let q1 := rnd (rnd (c0 * a1) + rnd (c1 * b1)) in
+  let q2 := rnd (rnd (c0 * a2) + rnd (c1 * b2)) in
+  let q3 := rnd (rnd (c0 * a3) + rnd (c1 * b3)) in
+  Rabs (sqrt (q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
+        / sqrt (a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3) - 1) <= 5.976e-7.
+Proof.
+  intros S0 S A0 A1 A2 A3 B0 B1 B2 B3 s0 s a0 a1 a2 a3 b0 b1 b2 b3 H0 Hs HA HB r c0 c1 q0 q1 q2 q3.
+  set (A := sqrt (a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3)) in *.
+  set (B := sqrt (b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3)) in *.
+  assert (HB2 : B * B = b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3)
+    by (apply sqrt_sqrt; pose proof (Rle_0_sqr b0); pose proof (Rle_0_sqr b1);
+        pose proof (Rle_0_sqr b2); pose proof (Rle_0_sqr b3); unfold Rsqr in *; lra).
+  assert (Hb : / 2 <= b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3) by nra.
+  pose proof (slerp_endpoint_norm_f32 S0 S A0 A1 A2 A3 B0 B1 B2 B3 H0 Hs Hb) as Hq.
+  cbv zeta in Hq. fold s0 s a0 a1 a2 a3 b0 b1 b2 b3 r c0 c1 q0 q1 q2 q3 B in Hq.
+  set (Q := sqrt (q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)) in *.
+  apply abs_split in Hq.
+  set (X := Q / B) in Hq. set (Y := B / A).
+  assert (E : Q / A = X * Y) by (unfold X, Y; field; lra).
+  rewrite E.
+  assert (HYA : Y * A = B) by (unfold Y; field; lra).
+  assert (HY0 : 0 <= Y) by (unfold Y; apply Rmult_le_pos; [lra|left; apply Rinv_0_lt_compat; lra]).
+  assert (HYu : Y <= 1 + 4.7821e-7).
+  { assert (Y * (1 - 2.391e-7) <= Y * A) by (apply Rmult_le_compat_l; lra). lra. }
+  assert (HYl : 1 - 4.782e-7 <= Y).
+  { assert (Y * A <= Y * (1 + 2.391e-7)) by (apply Rmult_le_compat_l; lra). lra. }
+  apply abs_join. split; nra.
 Qed.

@@ -1512,9 +1512,7 @@ fn f32_slerp_at_one_is_slerp_endpoint_f32_g() {
     let Some(m) = model("slerp_endpoint_f32", Code::F32) else {
         return;
     };
-    let names = [
-        "s0", "s", "a0", "a1", "a2", "a3", "b0", "b1", "b2", "b3",
-    ];
+    let names = ["s0", "s", "a0", "a1", "a2", "a3", "b0", "b1", "b2", "b3"];
     assert_eq!(m.inputs, names);
     law_terms_are_the_models("slerp_endpoint_norm_f32", &m);
     let mut kept = 0;

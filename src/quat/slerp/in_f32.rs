@@ -25,7 +25,7 @@ const ALPHA_LIMIT_BITS: u32 = 0x7e00_0000;
 /// [`Quat::slerp`]'s f32 evaluation, the whole of slerp on targets without
 /// the f64 one, callable on every target for the search of its norm's
 /// worst case (`proofs/tests/worst_cases.rs`) and the correspondence of
-/// `proofs/gappa/slerp_norm_f32.g`.
+/// `proofs/gappa/slerp_endpoint_f32.g`.
 #[cfg(kernels_exported)]
 #[must_use]
 pub fn slerp_in_f32(a: Quat, b: Quat, alpha: f32) -> Quat {
