@@ -1228,8 +1228,8 @@ fn slerp_f32_search(climbs: usize, pair: usize, steps: usize, seed: u64) -> [[f6
     let mut found = [[0f64; 2]; 2];
     let flat = |a: Quat, b: Quat, alpha: f32| [a.w, a.x, a.y, a.z, b.w, b.x, b.y, b.z, alpha];
     let see = |found: &mut [[f64; 2]; 2], i: usize, e: [f64; 2]| {
-        for k in 0..2 {
-            found[k][i] = found[k][i].max(e[k]);
+        for (f, e) in found.iter_mut().zip(e) {
+            f[i] = f[i].max(e);
         }
     };
     for (lo, hi) in [(&low, &high), (&high, &low)] {
@@ -1291,11 +1291,11 @@ fn slerp_f32_search(climbs: usize, pair: usize, steps: usize, seed: u64) -> [[f6
                 (_, 1) => d.uniform(1.0, 3.0),
                 (_, _) => d.uniform(-1000.0, 1000.0),
             };
-            for k in 0..2 {
+            for (k, f) in found.iter_mut().enumerate() {
                 let (_, e) = climb(&mut d, flat(a, b, alpha), steps, &|x| {
                     slerp_f32_deviations(x, *range)[k]
                 });
-                found[k][i] = found[k][i].max(e);
+                f[i] = f[i].max(e);
             }
         }
     }
