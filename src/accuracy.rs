@@ -220,14 +220,15 @@ pub const TAN_MAX_REL_ERROR: f32 = backend::TAN_MAX_REL_ERROR;
 /// found 1.8335e-7 (`proofs/tests/worst_cases.rs`).
 pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (random), 1.8335e-7 (by search)
 /// The norm error an operation adds: `|norm - 1|` of the result of `pow`
-/// and `from_axis_angle` (on any finite input) and of `slerp` on unit
-/// inputs, there relative to the norm of its first input
-/// (`| |r| / |a| - 1 |`, which for an f32 unit quaternion is 1 only up to
-/// its rounding); for `*`, relative to the product of the inputs' norms,
+/// and `from_axis_angle` (on any finite input); for `slerp` on unit
+/// inputs, relative to the nearest norm between its inputs' (`|r| / n -
+/// 1` with `n` the nearest value of `[min(|a|, |b|), max(|a|, |b|)]` to
+/// `|r|`: the result's norm moves from `|a|` to `|b|`, whose ratio for two
+/// results of `normalize` is 1 only within twice its error); for `*`, relative to the product of the inputs' norms,
 /// `| |a * b| / (|a| |b|) - 1 |`. The inputs' own distance from unit norm
 /// carries through a product: for two results of `normalize`, `|a * b|`
 /// is within `(1 + NORMALIZE_MAX_NORM_ERROR)^2 (1 + UNIT_NORM_ERROR) - 1`
-/// (8.3e-7) of 1, and a search found 4.6884e-7 (`proofs/tests/worst_cases.rs`).
+/// (9.9e-7) of 1, and a search found 4.6884e-7 (`proofs/tests/worst_cases.rs`).
 ///
 /// Known: measured. For products, `proofs/coq/mul_norm.v` proves 2.84e-7
 /// (Coq, on the certificate of `proofs/gappa/mul.g`, relative to `|a| |b|`
@@ -238,8 +239,15 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// `proofs/gappa/axis_angle.g`), given the sine and cosine kernel's
 /// relative errors within 1.05e-7 (proven in `sin_poly_tail.g` and
 /// `cos_poly_tail.g`: 1.0e-7 and 8e-8; the libm backend is outside it), and a search found
-/// 2.4337e-7 (`from_axis_angle`) and 2.2764e-7 (`pow`). `slerp` has no
-/// model. The largest over random draws is 2.572e-7.
+/// 2.4337e-7 (`from_axis_angle`) and 2.2764e-7 (`pow`). For
+/// `slerp`'s f32 evaluation (every target without the f64 one, and the
+/// inputs that one leaves) `proofs/coq/slerp_endpoint_norm_f32.v` proves,
+/// at `alpha = 1` (angles above 2^-12, given the sine kernel within
+/// 1.05e-7 relative, which `sin_poly_tail.g` proves), 1.193e-7 relative
+/// to `|b|` (a search: 1.0744e-7); the rest of `slerp` has no proof. A
+/// search of the f32 evaluation (`deep_slerp_f32_search`) finds 2.5020e-7 (`alpha` in [0, 1]) and 2.9384e-7 (extrapolating)
+/// against the range of the inputs' norms. The largest over random draws
+/// is 2.572e-7.
 pub const UNIT_NORM_ERROR: f32 = backend::UNIT_NORM_ERROR;
 /// `|norm - 1|` after a chain of 1,000,000 [`Quat::mul_renormalized`](crate::Quat::mul_renormalized)
 /// products cycling through 1,000 random rotations of up to 0.1 rad

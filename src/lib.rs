@@ -236,6 +236,8 @@ pub mod kani_kernels {
     #[cfg(feature = "kernel-contracts")]
     pub use crate::float::is_correctly_rounded_sqrt;
     pub use crate::float::{atan2, sin_cos, sqrt};
+    /// slerp's f32 evaluation, on every target.
+    pub use crate::quat::slerp_in_f32;
     /// slerp's f64 arc, `sin(x) / x` and coefficients, which
     /// `proofs/gappa/arc_f64.g`, `sinc_f64.g`, `coefficient_f64.g` and
     /// `coefficient_rest_f64.g` model.

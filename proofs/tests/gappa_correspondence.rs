@@ -1592,3 +1592,67 @@ fn projections_are_project4_g_and_project3_g() {
         "unscaled draws: {seen:?}"
     );
 }
+
+/// slerp_endpoint_f32.g: slerp's f32 evaluation at `alpha = 1`
+/// (`kani_kernels::slerp_in_f32`, on every target), in the branch the
+/// model takes (`phi > 2^-12`, squared norms within 1e-6 of each other).
+/// The angle is computed as the code computes it, written out here (the
+/// part of `b` orthogonal to `a`, its length, atan2), so that the model's
+/// input `s` is the sine kernel's `sin(phi)`; `s0` is `sin(0) = 0`.
+#[test]
+fn f32_slerp_at_one_is_slerp_endpoint_f32_g() {
+    let Some(m) = model("slerp_endpoint_f32", Code::F32) else {
+        return;
+    };
+    let names = ["s0", "s", "a0", "a1", "a2", "a3", "b0", "b1", "b2", "b3"];
+    assert_eq!(m.inputs, names);
+    law_terms_are_the_models("slerp_endpoint_norm_f32", &m);
+    let mut kept = 0;
+    for (i, mut d) in draws() {
+        let a = d.unit_quat();
+        let other = match i % 3 {
+            0 => d.unit_quat(),
+            1 => {
+                // Near a, or near -a: small angles and the flip.
+                let s = 2f32.powi(-(d.below(12) as i32) - 1);
+                let sign = if d.below(2) == 0 { 1.0 } else { -1.0 };
+                quat([a.w, a.x, a.y, a.z].map(|c| sign * (c + s * d.uniform(-1.0, 1.0))))
+                    .normalize()
+            }
+            _ => quat(core::array::from_fn(|_| component(&mut d))).normalize(),
+        };
+        let (n2, on2) = (a.norm_squared(), other.norm_squared());
+        if !(other.is_finite() && (n2 - on2).abs() <= 1e-6 * on2) {
+            continue;
+        }
+        let dot = a.dot(other);
+        let flip = 1.0f32.copysign(dot);
+        let b = quat([other.w, other.x, other.y, other.z].map(|c| c * flip));
+        let dot = dot * flip;
+        let u = [b.x, b.y, b.z, b.w]
+            .iter()
+            .zip([a.x, a.y, a.z, a.w])
+            .map(|(o, s)| n2 * o + -dot * s)
+            .collect::<Vec<f32>>();
+        let sum = u[0] * u[0] + u[1] * u[1] + u[2] * u[2] + u[3] * u[3];
+        if !(2f32.powi(-100)..=f32::MAX).contains(&sum) {
+            continue;
+        }
+        let phi = kani_kernels::atan2(kani_kernels::sqrt(sum), kani_kernels::sqrt(n2) * dot * 1.0);
+        if phi <= 1.0 / 4096.0 {
+            continue;
+        }
+        let s = kani_kernels::sin_cos(phi).0;
+        let inputs = [0.0, s, a.w, a.x, a.y, a.z, b.w, b.x, b.y, b.z];
+        let out = m.run(&inputs.map(f64::from));
+        let r = kani_kernels::slerp_in_f32(a, other, 1.0);
+        for (name, c) in [("q0", r.w), ("q1", r.x), ("q2", r.y), ("q3", r.z)] {
+            check(&m, &out, name, c, &inputs);
+        }
+        kept += 1;
+    }
+    assert!(
+        kept > DRAWS / 2,
+        "{kept} of {DRAWS} draws in the model's branch"
+    );
+}

@@ -1344,3 +1344,211 @@ fn axis_angle_and_pow_found_stay_within_their_constant() {
 fn deep_axis_angle_and_pow_search() {
     axis_angle_and_pow_within_their_constant(30_000);
 }
+
+/// `[| |r| / n - 1 |, | |r| / m - 1 |]` for `r` slerp's f32 evaluation
+/// (the whole of slerp on targets without the f64 one, and what the f64
+/// one leaves) of `a` and `b` the results of `normalize` on the first and
+/// the next four inputs, at `alpha` the last: the first the constant's
+/// quantity (`n` the nearest norm to `|r|` between `|a|` and `|b|`), the second what slerp adds to the inputs' own norms, with
+/// `m = w0 |a| + w1 |b|` for `alpha` in [0, 1] (the weights `w0 = C0
+/// cos(alpha phi)`, `w1 = C1 cos((1 - alpha) phi)` of the exact
+/// coefficients, which sum to 1) and `m = |a|` extrapolating (a turn of
+/// `a`); 0 where `alpha` is outside `range` or a result is not finite.
+fn slerp_f32_deviations(v: [f32; 9], range: (f32, f32)) -> [f64; 2] {
+    use rigtform::kani_kernels::slerp_in_f32;
+    let alpha = v[8];
+    if !(range.0..=range.1).contains(&alpha) {
+        return [0.0; 2];
+    }
+    let a = Quat::from_wxyz(v[0], v[1], v[2], v[3]).normalize();
+    let b = Quat::from_wxyz(v[4], v[5], v[6], v[7]).normalize();
+    let r = slerp_in_f32(a, b, alpha);
+    if !(a.is_finite() && b.is_finite() && r.is_finite()) {
+        return [0.0; 2];
+    }
+    let (na, nb, n) = (norm64(a), norm64(b), norm64(r));
+    let m = if (0.0..=1.0).contains(&alpha) {
+        let (pa, pb) = (q64(a), q64(b));
+        let dot: f64 = pa.iter().zip(&pb).map(|(x, y)| x * y).sum();
+        let len = |s: f64| {
+            pa.iter()
+                .zip(&pb)
+                .map(|(x, y)| (x / na + s * dot.signum() * y / nb).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        };
+        let phi = 2.0 * len(-1.0).atan2(len(1.0));
+        let al = f64::from(alpha);
+        if phi.sin() == 0.0 {
+            na
+        } else {
+            let (c0, c1) = (
+                ((1.0 - al) * phi).sin() / phi.sin(),
+                (al * phi).sin() / phi.sin(),
+            );
+            c0 * (al * phi).cos() * na + c1 * ((1.0 - al) * phi).cos() * nb
+        }
+    } else {
+        na
+    };
+    // The nearest norm between the inputs' (UNIT_NORM_ERROR's measure).
+    let nearest = n.clamp(na.min(nb), na.max(nb));
+    [(n / nearest - 1.0).abs(), (n / m - 1.0).abs()]
+}
+
+/// The largest of slerp's f32 norm errors ([`slerp_f32_deviations`], both
+/// quantities) for `alpha` in [0, 1] and for `alpha` in [-2^20, 2^20]
+/// outside it: every pair of the `pair` results of `normalize` with the
+/// largest norm errors of opposite signs (where `|b| / |a|` is farthest
+/// from 1) at `alpha` near 1, 1/2 and random; then `climbs` climbs on
+/// each error over both inputs and `alpha`, from random pairs, pairs a
+/// few ulps to 2^-4 apart (the small-angle branch among them), pairs near
+/// a right angle, and pairs of the pool, with `alpha` random or near the
+/// ends. `[[in [0, 1], extrapolated]; 2]`, relative to the nearest norm between the inputs', then `m`.
+fn slerp_f32_search(climbs: usize, pair: usize, steps: usize, seed: u64) -> [[f64; 2]; 2] {
+    let (pool, _) = normalized_pool(climbs.max(200), seed);
+    let (low, high): (Vec<Quat>, Vec<Quat>) = pool.iter().partition(|q| norm64(**q) < 1.0);
+    let mut d = Draws::new(seed ^ 0x51e4);
+    let ranges = [(0.0, 1.0), (-1_048_576.0, 1_048_576.0)];
+    let mut found = [[0f64; 2]; 2];
+    let flat = |a: Quat, b: Quat, alpha: f32| [a.w, a.x, a.y, a.z, b.w, b.x, b.y, b.z, alpha];
+    let see = |found: &mut [[f64; 2]; 2], i: usize, e: [f64; 2]| {
+        for (f, e) in found.iter_mut().zip(e) {
+            f[i] = f[i].max(e);
+        }
+    };
+    for (lo, hi) in [(&low, &high), (&high, &low)] {
+        for a in lo.iter().take(pair) {
+            for b in hi.iter().take(pair) {
+                for alpha in [1.0, 0.999_999_94, 0.5, d.uniform(0.0, 1.0)] {
+                    see(
+                        &mut found,
+                        0,
+                        slerp_f32_deviations(flat(*a, *b, alpha), ranges[0]),
+                    );
+                }
+                let alpha = d.uniform(-3.0, 4.0);
+                see(
+                    &mut found,
+                    1,
+                    slerp_f32_deviations(flat(*a, *b, alpha), ranges[1]),
+                );
+            }
+        }
+    }
+    for c in 0..climbs {
+        let a = d.unit_quat();
+        let b = match c % 4 {
+            0 => d.unit_quat(),
+            1 => {
+                let s = 2f32.powi(-(d.below(20) as i32) - 4);
+                Quat::from_wxyz(
+                    a.w + s * d.uniform(-1.0, 1.0),
+                    a.x + s * d.uniform(-1.0, 1.0),
+                    a.y + s * d.uniform(-1.0, 1.0),
+                    a.z + s * d.uniform(-1.0, 1.0),
+                )
+            }
+            2 => {
+                // Near a right angle: b minus its part along a.
+                let b = d.unit_quat();
+                let ab = a.dot(b);
+                Quat::from_wxyz(
+                    b.w - ab * a.w,
+                    b.x - ab * a.x,
+                    b.y - ab * a.y,
+                    b.z - ab * a.z,
+                )
+            }
+            _ => pool[d.below(pool.len().min(pair.max(1)))],
+        };
+        let a = if c % 4 == 3 {
+            pool[d.below(pool.len())]
+        } else {
+            a
+        };
+        for (i, range) in ranges.iter().enumerate() {
+            let alpha = match (i, d.below(3)) {
+                (0, 0) => 1.0,
+                (0, 1) => d.uniform(0.0, 1.0),
+                (0, _) => d.uniform(0.9, 1.0),
+                (_, 0) => d.uniform(-2.0, 0.0),
+                (_, 1) => d.uniform(1.0, 3.0),
+                (_, _) => d.uniform(-1000.0, 1000.0),
+            };
+            for (k, f) in found.iter_mut().enumerate() {
+                let (_, e) = climb(&mut d, flat(a, b, alpha), steps, &|x| {
+                    slerp_f32_deviations(x, *range)[k]
+                });
+                f[i] = f[i].max(e);
+            }
+        }
+    }
+    found
+}
+
+/// `| |slerp(a, b, 1)| / |b| - 1 |` on slerp's f32 evaluation, for `a`
+/// and `b` the results of `normalize` on the first and the last four
+/// inputs more than 2^-11 rad apart (the branch of
+/// `proofs/coq/slerp_endpoint_norm_f32.v`, `phi > 2^-12`, with a margin);
+/// 0 elsewhere.
+fn slerp_f32_endpoint_deviation(v: [f32; 8]) -> f64 {
+    use rigtform::kani_kernels::slerp_in_f32;
+    let a = Quat::from_wxyz(v[0], v[1], v[2], v[3]).normalize();
+    let b = Quat::from_wxyz(v[4], v[5], v[6], v[7]).normalize();
+    if !(a.is_finite() && b.is_finite()) {
+        return 0.0;
+    }
+    let (pa, pb) = (q64(a), q64(b));
+    let cos: f64 = pa.iter().zip(&pb).map(|(x, y)| x * y).sum::<f64>() / (norm64(a) * norm64(b));
+    if cos
+        .abs()
+        .min(1.0)
+        .acos()
+        .min(std::f64::consts::PI - cos.abs().min(1.0).acos())
+        <= 1.0 / 2048.0
+    {
+        return 0.0;
+    }
+    let r = slerp_in_f32(a, b, 1.0);
+    (norm64(r) / norm64(b) - 1.0).abs()
+}
+
+/// slerp's f32 searches, against `UNIT_NORM_ERROR`, and the endpoint's
+/// against the proven bound of `proofs/coq/slerp_endpoint_norm_f32.v`.
+fn slerp_f32_within_the_constant(climbs: usize, pair: usize, steps: usize) {
+    let [[in_plane, extrapolated], [in_plane_mean, _]] = slerp_f32_search(climbs, pair, steps, 29);
+    println!("| |slerp(a, b, alpha)| / n - 1 |, n the nearest norm between |a| and |b|, f32 path, alpha in [0, 1]: {in_plane:.4e}");
+    println!(
+        "| |slerp(a, b, alpha)| / n - 1 |, f32 path, |alpha| <= 2^20 outside [0, 1]: {extrapolated:.4e}"
+    );
+    println!(
+        "| |slerp(a, b, alpha)| / m - 1 |, m the weighted mean of |a| and |b|, f32 path, alpha in [0, 1]: {in_plane_mean:.4e}"
+    );
+    let mut d = Draws::new(31);
+    let endpoint = (0..climbs / 10)
+        .map(|_| climb_far(&mut d, steps, &slerp_f32_endpoint_deviation))
+        .fold(0f64, f64::max);
+    println!(
+        "| |slerp(a, b, 1)| / |b| - 1 |, f32 path, more than 2^-11 rad apart: {endpoint:.4e} ({} climbs; 1.193e-7 proven)",
+        climbs / 10
+    );
+    assert!(endpoint <= 1.193e-7, "{endpoint:e}");
+    within(
+        "slerp's f32 path",
+        in_plane.max(extrapolated),
+        "UNIT_NORM_ERROR",
+        UNIT_NORM_ERROR,
+    );
+}
+
+#[test]
+fn slerp_f32_found_stays_within_the_constant() {
+    slerp_f32_within_the_constant(200, 20, 300);
+}
+
+#[test]
+#[ignore = "a minute in release: the search the constant's doc quotes"]
+fn deep_slerp_f32_search() {
+    slerp_f32_within_the_constant(100_000, 300, 600);
+}

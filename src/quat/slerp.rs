@@ -18,6 +18,8 @@
 use super::Quat;
 
 mod in_f32;
+#[cfg(kernels_exported)]
+pub use in_f32::slerp_in_f32;
 #[cfg(desktop64)]
 pub(super) mod in_f64;
 #[cfg(desktop64)]

@@ -22,6 +22,16 @@ const MIN_ORTHOGONAL: f32 = 1.084_202_2e-19;
 /// immediate operand on Arm, where f32::MAX / 4 would be a load).
 const ALPHA_LIMIT_BITS: u32 = 0x7e00_0000;
 
+/// [`Quat::slerp`]'s f32 evaluation, the whole of slerp on targets without
+/// the f64 one, callable on every target for the search of its norm's
+/// worst case (`proofs/tests/worst_cases.rs`) and the correspondence of
+/// `proofs/gappa/slerp_endpoint_f32.g`.
+#[cfg(kernels_exported)]
+#[must_use]
+pub fn slerp_in_f32(a: Quat, b: Quat, alpha: f32) -> Quat {
+    a.slerp_f32(b, alpha)
+}
+
 impl Quat {
     /// [`slerp`](Self::slerp) in f32, the whole of it on every target but
     /// x86-64 and AArch64, where it takes what the f64 evaluation does not,
