@@ -7,8 +7,8 @@
    through: at alpha = 1 the result is b's rotation at b's norm).
 
    Assumed, not proven here: the sine kernel's result for phi in
-   (2^-12, pi/2] is within 1.05e-7 of sin(phi), relative (the sin_poly and
-   cos_poly models bound the kernel), so that sin(phi) as computed lies in
+   (2^-12, pi/2] is within 1.05e-7 of sin(phi), relative (sin_poly_tail.g and
+   cos_poly_tail.g prove 1.0e-7 and 8e-8), so that sin(phi) as computed lies in
    [2^-13, 1]: sin(2^-12) (1 - 1.05e-7) > 2^-13, and no f32 lies in
    (1, 1 + 1.05e-7]. The theorems take that range of s as their
    hypothesis. The sine of near = 0 is exactly 0 (sin_poly(0, 0) = 0), the
