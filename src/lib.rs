@@ -236,11 +236,11 @@ pub mod kani_kernels {
     #[cfg(feature = "kernel-contracts")]
     pub use crate::float::is_correctly_rounded_sqrt;
     pub use crate::float::{atan2, sin_cos, sqrt};
-    /// slerp's f64 arc, `sin(x) / x` and coefficients, which
-    /// `proofs/gappa/arc_f64.g`, `sinc_f64.g`, `coefficient_f64.g` and
-    /// `coefficient_rest_f64.g` model.
+    /// slerp's f64 pair, arc, `sin(x) / x` and coefficients, which
+    /// `proofs/gappa/slerp_angle_f64.g`, `arc_f64.g`, `sinc_f64.g`,
+    /// `coefficient_f64.g` and `coefficient_rest_f64.g` model.
     #[cfg(desktop64)]
-    pub use crate::quat::{slerp_arc, slerp_coefficients, slerp_sinc};
+    pub use crate::quat::{slerp_arc, slerp_coefficients, slerp_pair, slerp_sinc};
 }
 
 /// The conditions of the contracts on the core operations, under Kani and

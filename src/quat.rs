@@ -29,7 +29,7 @@
 use crate::vec::euclidean;
 
 #[cfg(all(kernels_exported, desktop64))]
-pub use slerp::in_f64::{slerp_arc, slerp_coefficients, slerp_sinc};
+pub use slerp::in_f64::{slerp_arc, slerp_coefficients, slerp_pair, slerp_sinc};
 pub(crate) use slerp::slice::{slerp_slice_by, Slerped};
 pub(crate) use slerp::WithRotation;
 
