@@ -46,7 +46,7 @@
    (projection): with C0 + C1 <= sqrt(2), about 2^-24 (1 + sqrt 2) |R|^2.
    Together |r|^2 is within 4.89e-7 of m^2, and |r| within 2.45e-7 of m,
    relative (sqrt_step). *)
-(*! looser UNIT_NORM_ERROR slerp_norm_f64 <= 2.45e-7 | |slerp(a, b, alpha)| / m - 1 |, slerp's f64 path (x86-64 and AArch64), alpha in (0, 1], a, b within 2^-20 of unit norm; m the weighted mean of |a| and |b|, |a| for inputs of equal norms *)
+(*! law - slerp_norm_f64 <= 2.45e-7 | |slerp(a, b, alpha)| / m - 1 |, slerp's f64 path (x86-64 and AArch64), alpha in (0, 1], a, b within 2^-20 of unit norm; m the weighted mean of |a| and |b|, |a| for inputs of equal norms *)
 Require Import Reals Psatz.
 Require Import Flocq.Core.Core.
 Require Import Laws.Common.

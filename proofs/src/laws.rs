@@ -73,7 +73,7 @@ pub fn assert_holds(verdict: Verdict) {
 /// products, and the vector of their absolute sums has norm at most
 /// `2 |a| |b|`), so `|norm^2 - 1| <= 16u = 9.5e-7`; `pow` adds sine and
 /// cosine errors (`3 SIN_COS_MAX_ABS_ERROR`) to the normalized axis (`8u`):
-/// 6.6e-7. Both are below 4 x 3.5e-7 = 1.4e-6, and so is `pow` under the
+/// 6.6e-7. Both are below 4 x 4.7e-7 = 1.9e-6, and so is `pow` under the
 /// Kani stubs, whose sines may be off the unit circle by the whole
 /// [`PYTHAGORAS_TOL`](crate::contracts::PYTHAGORAS_TOL) (4.5e-7, from the
 /// kernel's ulp bound): 9.3e-7.

@@ -1,8 +1,8 @@
 //! Searches for the worst cases of the norm and rotation laws, of the
 //! product's angle (`product_angle_search`), of the vector sampler's
 //! bound (`vector_sampler_search`), of `RigTForm`'s inverse identities
-//! (`rigid_inverse_search`) and of the projections
-//! (`projection_search`): from seeded
+//! (`rigid_inverse_search`), of the projections (`projection_search`)
+//! and of slerp's norm on its f64 path (`slerp_f64_norm_search`): from seeded
 //! starting points, each climbs towards the inputs with the largest error,
 //! changing one input's last bits at a time (`climb`), or one or two
 //! inputs' (`climb_wide`), and keeping a step only if it makes the error
