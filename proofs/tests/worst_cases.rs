@@ -1229,9 +1229,9 @@ fn slerp_f64_norm_search(climbs: usize, seed: u64) -> [f64; 2] {
                 let across: Vec<f64> = a.iter().zip(v).map(|(p, q)| q - av * p).collect();
                 let len = across.iter().map(|c| c * c).sum::<f64>().sqrt();
                 let phi = f64::from(d.uniform(1.2, 1.55));
-                for i in 0..4 {
-                    x[i] = a[i] as f32;
-                    x[4 + i] = (phi.cos() * a[i] + phi.sin() * across[i] / len) as f32;
+                for (i, (p, q)) in a.iter().zip(&across).enumerate() {
+                    x[i] = *p as f32;
+                    x[4 + i] = (phi.cos() * p + phi.sin() * q / len) as f32;
                 }
                 d.uniform(0.4, 0.6)
             }
