@@ -353,7 +353,7 @@ impl Quat {
 /// slerp's pair as a single call computes it: `[near, far, t2]`, the
 /// squared lengths `|a - cn(b)|^2` and `|a + cn(b)|^2` and their quotient,
 /// which `proofs/gappa/slerp_angle_f64.g` models; `None` where the squared
-/// norms are beyond [`NORM_SQUARED_LIMIT`].
+/// norms are beyond 2^32, infinite or NaN.
 #[cfg(any(kani, feature = "kernel-contracts"))]
 #[must_use]
 pub fn slerp_pair(a: Quat, b: Quat) -> Option<[f64; 3]> {
