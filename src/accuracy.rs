@@ -228,7 +228,7 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// `| |a * b| / (|a| |b|) - 1 |`. The inputs' own distance from unit norm
 /// carries through a product: for two results of `normalize`, `|a * b|`
 /// is within `(1 + NORMALIZE_MAX_NORM_ERROR)^2 (1 + UNIT_NORM_ERROR) - 1`
-/// (9.9e-7) of 1, and a search found 4.6884e-7 (`proofs/tests/worst_cases.rs`).
+/// (8.3e-7) of 1, and a search found 4.6884e-7 (`proofs/tests/worst_cases.rs`).
 ///
 /// Known: measured. For products, `proofs/coq/mul_norm.v` proves 2.84e-7
 /// (Coq, on the certificate of `proofs/gappa/mul.g`, relative to `|a| |b|`
@@ -246,8 +246,15 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// 1.05e-7 relative, which `sin_poly_tail.g` proves), 1.193e-7 relative
 /// to `|b|` (a search: 1.0744e-7); the rest of `slerp` has no proof. A
 /// search of the f32 evaluation (`deep_slerp_f32_search`) finds 2.5020e-7 (`alpha` in [0, 1]) and 2.9384e-7 (extrapolating)
-/// against the range of the inputs' norms. The largest over random draws
-/// is 2.572e-7.
+/// against the range of the inputs' norms. For `slerp`'s f64 path
+/// (x86-64 and AArch64, `alpha` in (0, 1]), `proofs/coq/slerp_norm_f64.v`
+/// proves 2.45e-7 relative to the mean of the inputs' norms that the exact
+/// coefficients weigh (Coq; the angle from `proofs/gappa/slerp_angle_f64.g`,
+/// the coefficients from `coefficient_f64.g` and `coefficient_rest_f64.g`),
+/// which lies in their range, and the search found 1.5033e-7 against that
+/// mean (ratio 1.63: not counted as this constant's proof) and 1.5332e-7
+/// against the range (`deep_slerp_f64_norm_search`). The largest over
+/// random draws is 2.572e-7.
 pub const UNIT_NORM_ERROR: f32 = backend::UNIT_NORM_ERROR;
 /// `|norm - 1|` after a chain of 1,000,000 [`Quat::mul_renormalized`](crate::Quat::mul_renormalized)
 /// products cycling through 1,000 random rotations of up to 0.1 rad

@@ -238,11 +238,11 @@ pub mod kani_kernels {
     pub use crate::float::{atan2, sin_cos, sqrt};
     /// slerp's f32 evaluation, on every target.
     pub use crate::quat::slerp_in_f32;
-    /// slerp's f64 arc, `sin(x) / x` and coefficients, which
-    /// `proofs/gappa/arc_f64.g`, `sinc_f64.g`, `coefficient_f64.g` and
-    /// `coefficient_rest_f64.g` model.
+    /// slerp's f64 pair, arc, `sin(x) / x` and coefficients, which
+    /// `proofs/gappa/slerp_angle_f64.g`, `arc_f64.g`, `sinc_f64.g`,
+    /// `coefficient_f64.g` and `coefficient_rest_f64.g` model.
     #[cfg(desktop64)]
-    pub use crate::quat::{slerp_arc, slerp_coefficients, slerp_sinc};
+    pub use crate::quat::{slerp_arc, slerp_coefficients, slerp_pair, slerp_sinc};
 }
 
 /// The conditions of the contracts on the core operations, under Kani and

@@ -29,7 +29,7 @@
 use crate::vec::euclidean;
 
 #[cfg(all(kernels_exported, desktop64))]
-pub use slerp::in_f64::{slerp_arc, slerp_coefficients, slerp_sinc};
+pub use slerp::in_f64::{slerp_arc, slerp_coefficients, slerp_pair, slerp_sinc};
 #[cfg(kernels_exported)]
 pub use slerp::slerp_in_f32;
 pub(crate) use slerp::slice::{slerp_slice_by, Slerped};

@@ -1656,3 +1656,37 @@ fn f32_slerp_at_one_is_slerp_endpoint_f32_g() {
         "{kept} of {DRAWS} draws in the model's branch"
     );
 }
+
+/// slerp_angle_f64.g on the pairs a single call takes: unit pairs, pairs
+/// near each other and near a right angle, with `b` turned to the side
+/// where `a . b >= 0` (the model's `cn(b)`: the code takes `|a . b|`,
+/// which is the same sums negated).
+#[cfg(any(target_arch = "x86_64", target_arch = "aarch64"))]
+#[test]
+fn f64_pair_is_slerp_angle_f64_g() {
+    let Some(m) = model("slerp_angle_f64", Code::F64) else {
+        return;
+    };
+    assert_eq!(m.inputs, ["aw", "ax", "ay", "az", "bw", "bx", "by", "bz"]);
+    for (i, mut d) in draws() {
+        let a = d.unit_quat();
+        let b = match i % 3 {
+            0 => d.unit_quat(),
+            1 => quat([a.w, a.x, a.y, a.z].map(|c| c + d.uniform(-1e-3, 1e-3))).normalize(),
+            _ => quat([-a.x, a.w, -a.z, a.y].map(|c| c + d.uniform(-1e-3, 1e-3))).normalize(),
+        };
+        let Some([near, far, t2]) = kani_kernels::slerp_pair(a, b) else {
+            continue;
+        };
+        let cn = if a.dot(b) < 0.0 { -b } else { b };
+        let inputs = [a.w, a.x, a.y, a.z, cn.w, cn.x, cn.y, cn.z];
+        let out = m.run(&inputs.map(f64::from));
+        for (name, code) in [("near", near), ("far", far), ("t2", t2)] {
+            assert!(
+                same_f64(out[name], code),
+                "slerp_angle_f64: {name} = {:e} in the model, {code:e} in the code, for {inputs:?}",
+                out[name]
+            );
+        }
+    }
+}

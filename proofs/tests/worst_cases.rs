@@ -1,8 +1,8 @@
 //! Searches for the worst cases of the norm and rotation laws, of the
 //! product's angle (`product_angle_search`), of the vector sampler's
 //! bound (`vector_sampler_search`), of `RigTForm`'s inverse identities
-//! (`rigid_inverse_search`) and of the projections
-//! (`projection_search`): from seeded
+//! (`rigid_inverse_search`), of the projections (`projection_search`)
+//! and of slerp's norm on its f64 path (`slerp_f64_norm_search`): from seeded
 //! starting points, each climbs towards the inputs with the largest error,
 //! changing one input's last bits at a time (`climb`), or one or two
 //! inputs' (`climb_wide`), and keeping a step only if it makes the error
@@ -1551,4 +1551,131 @@ fn slerp_f32_found_stays_within_the_constant() {
 #[ignore = "a minute in release: the search the constant's doc quotes"]
 fn deep_slerp_f32_search() {
     slerp_f32_within_the_constant(100_000, 300, 600);
+}
+
+/// slerp's norm on its f64 path (x86-64 and AArch64: `alpha` in (0, 1],
+/// inputs more than 2^-12 rad apart and not at a right angle), for `a`
+/// and `b` the results of `normalize` on the first and the next four
+/// inputs, `alpha` the last (0 outside that path): `[| |r| / n - 1 |,
+/// | |r| / m - 1 |]`, the first the constant's (`n` the nearest norm to
+/// `|r|` between `|a|` and `|b|`), the second
+/// `proofs/coq/slerp_norm_f64.v`'s, with `m = w0 |a| + w1 |b|` the mean of
+/// the inputs' norms with the weights `w0 = C0 cos(alpha phi)`, `w1 = C1
+/// cos((1 - alpha) phi)` of the exact coefficients `C0`, `C1` (`m = |a|`
+/// for inputs of equal norms).
+fn slerp_f64_norm_errors(v: [f32; 9]) -> [f64; 2] {
+    let a = Quat::from_wxyz(v[0], v[1], v[2], v[3]).normalize();
+    let b = Quat::from_wxyz(v[4], v[5], v[6], v[7]).normalize();
+    let alpha = v[8];
+    if !(a.is_finite() && b.is_finite() && alpha > 0.0 && alpha <= 1.0) {
+        return [0.0; 2];
+    }
+    let (pa, pb) = (q64(a), q64(b));
+    let dot: f64 = pa.iter().zip(&pb).map(|(x, y)| x * y).sum();
+    let (na, nb) = (norm64(a), norm64(b));
+    // The angle between the directions of a and cn(b).
+    let sign = dot.signum();
+    let len = |s: f64| {
+        pa.iter()
+            .zip(&pb)
+            .map(|(x, y)| (x / na + s * sign * y / nb).powi(2))
+            .sum::<f64>()
+            .sqrt()
+    };
+    let phi = 2.0 * len(-1.0).atan2(len(1.0));
+    // The f32 path takes angles up to 2^-12 and right angles to f64's
+    // precision; 2^-11 and 1e-9 leave a margin.
+    if phi <= 1.0 / 2048.0 || dot.abs() < 1e-9 {
+        return [0.0; 2];
+    }
+    let al = f64::from(alpha);
+    let (c0, c1) = (
+        ((1.0 - al) * phi).sin() / phi.sin(),
+        (al * phi).sin() / phi.sin(),
+    );
+    let (w0, w1) = (c0 * (al * phi).cos(), c1 * ((1.0 - al) * phi).cos());
+    let n = norm64(a.slerp(b, alpha));
+    // The nearest norm between the inputs' (UNIT_NORM_ERROR's measure).
+    let nearest = n.clamp(na.min(nb), na.max(nb));
+    [
+        (n / nearest - 1.0).abs(),
+        (n / (w0 * na + w1 * nb) - 1.0).abs(),
+    ]
+}
+
+/// The largest errors of [`slerp_f64_norm_errors`] that `climbs` climbs
+/// each find, from pairs with components uniform in [-1, 1] and `alpha`
+/// uniform in (0, 1], a quarter of them with `alpha` near 1/2 and a
+/// quarter near 1, climbing each error by up to 4096, 64 and 4 units in
+/// the last place.
+fn slerp_f64_norm_search(climbs: usize, seed: u64) -> [f64; 2] {
+    let mut d = Draws::new(seed);
+    let mut found = [0f64; 2];
+    for c in 0..climbs {
+        let mut x: [f32; 9] = core::array::from_fn(|_| d.uniform(-1.0, 1.0));
+        x[8] = match c % 4 {
+            1 => d.uniform(0.45, 0.55),
+            2 => d.uniform(0.95, 1.0),
+            3 => {
+                // Far apart (1.2 to 1.55 rad), where the coefficients'
+                // sum, and so the rounding of the weighted sum, is
+                // largest: b = cos(phi) a + sin(phi) u, u across a.
+                let a = q64(Quat::from_wxyz(x[0], x[1], x[2], x[3]).normalize());
+                let v = x[4..8].iter().map(|c| f64::from(*c));
+                let av: f64 = a.iter().zip(v.clone()).map(|(p, q)| p * q).sum();
+                let across: Vec<f64> = a.iter().zip(v).map(|(p, q)| q - av * p).collect();
+                let len = across.iter().map(|c| c * c).sum::<f64>().sqrt();
+                let phi = f64::from(d.uniform(1.2, 1.55));
+                for (i, (p, q)) in a.iter().zip(&across).enumerate() {
+                    x[i] = *p as f32;
+                    x[4 + i] = (phi.cos() * p + phi.sin() * q / len) as f32;
+                }
+                d.uniform(0.4, 0.6)
+            }
+            _ => d.uniform(0.0, 1.0).max(f32::MIN_POSITIVE),
+        };
+        for (i, f) in found.iter_mut().enumerate() {
+            let mut start = (x, 0.0);
+            for reach in [4096, 64, 4] {
+                start = climb_wide(&mut d, start.0, 300, reach, &|v| {
+                    slerp_f64_norm_errors(v)[i]
+                });
+            }
+            *f = f.max(start.1);
+        }
+    }
+    found
+}
+
+/// The bound `proofs/coq/slerp_norm_f64.v` proves of `| |r| / m - 1 |`.
+const SLERP_F64_NORM_PROVEN: f64 = 2.45e-7;
+
+/// slerp's f64 path's searches, `climbs` climbs each, printed: the norm
+/// against the range of the inputs' norms and `UNIT_NORM_ERROR`, and relative to the
+/// weighted mean of the inputs' norms against the proven bound of
+/// `proofs/coq/slerp_norm_f64.v`.
+fn slerp_f64_norm_within(climbs: usize) {
+    let [own, mean] = slerp_f64_norm_search(climbs, 29);
+    within(
+        &format!("slerp, f64 path, | |r| / n - 1 |, n the nearest norm between |a| and |b|, results of normalize ({climbs} climbs)"),
+        own,
+        "UNIT_NORM_ERROR",
+        UNIT_NORM_ERROR,
+    );
+    println!(
+        "slerp, f64 path, | |r| / m - 1 |, m the weighted mean of |a| and |b|: {mean:.4e} (proven {SLERP_F64_NORM_PROVEN:e}, ratio {:.3})",
+        SLERP_F64_NORM_PROVEN / mean
+    );
+    assert!(mean <= SLERP_F64_NORM_PROVEN, "{mean:e}");
+}
+
+#[test]
+fn slerp_f64_norm_found_stays_within_the_proven_bound() {
+    slerp_f64_norm_within(60);
+}
+
+#[test]
+#[ignore = "a minute in release: the search the constant's doc quotes"]
+fn deep_slerp_f64_norm_search() {
+    slerp_f64_norm_within(40_000);
 }

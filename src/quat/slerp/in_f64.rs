@@ -350,6 +350,17 @@ impl Quat {
     }
 }
 
+/// slerp's pair as a single call computes it: `[near, far, t2]`, the
+/// squared lengths `|a - cn(b)|^2` and `|a + cn(b)|^2` and their quotient,
+/// which `proofs/gappa/slerp_angle_f64.g` models; `None` where the squared
+/// norms are beyond 2^32, infinite or NaN.
+#[cfg(any(kani, feature = "kernel-contracts"))]
+#[must_use]
+pub fn slerp_pair(a: Quat, b: Quat) -> Option<[f64; 3]> {
+    let pair = Pair::checked::<Two>(&a, &b)?;
+    Some([pair.near(), pair.far(), pair.quotient()])
+}
+
 /// slerp's arc: `(phi^2, phi / sin(phi))` from the squared lengths
 /// `near = |a - cn(b)|^2` and `far = |a + cn(b)|^2` of a pair, which
 /// `proofs/gappa/arc_quotient_f64.g` (their quotient) and `arc_f64.g` (the
