@@ -46,6 +46,9 @@
    (projection): with C0 + C1 <= sqrt(2), about 2^-24 (1 + sqrt 2) |R|^2.
    Together |r|^2 is within 4.89e-7 of m^2, and |r| within 2.45e-7 of m,
    relative (sqrt_step). *)
+(*! given coefficient_f64.g c1 <= 4.09e-8 the coefficient of b before its rounding to f32, relative *)
+(*! given coefficient_rest_f64.g c0 <= 4.09e-8 the coefficient of a before its rounding to f32, relative *)
+(*! given slerp_angle_f64.g cosine <= 4e-15 the cosine of the code's angle against the inputs' *)
 (*! law - slerp_norm_f64 <= 2.45e-7 | |slerp(a, b, alpha)| / m - 1 |, slerp's f64 path (x86-64 and AArch64), alpha in (0, 1], a, b within 2^-20 of unit norm; m the weighted mean of |a| and |b|, |a| for inputs of equal norms *)
 Require Import Reals Psatz.
 Require Import Flocq.Core.Core.

@@ -140,7 +140,8 @@ fn check_given(text: &str, line: &str, models: &[Proven]) -> Result<()> {
     let Some(proven) = models.iter().find(|p| p.model == model) else {
         bail!("it takes {what} <= {value} from {model}, which is not a model of this run");
     };
-    if !proven.claims.iter().any(|c| c.value <= limit) {
+    let proves = |c: &Claim| matches!(c.kind.as_str(), "bound" | "looser" | "law");
+    if !proven.claims.iter().any(|c| proves(c) && c.value <= limit) {
         bail!("it takes {what} <= {value} from {model}, whose claims prove no bound within it");
     }
     if text.matches(value).count() < 2 {
