@@ -5,7 +5,7 @@
    + 0 0, summed left to right, each component divided by b), (s, c) the
    sine and cosine kernel's results for one f32 argument (angle / 2, or
    alpha phi), and the vector part the rounded products k s. f32, round to
-   nearest even. Within 3.733e-7 of 1.
+   nearest even. Within 3.483e-7 of 1.
 
    Domain: (x, y, z) scaled by an exact power of four so that its exact sum
    of squares lies in [1, 4], as for normalize (proofs/gappa/normalize.g
@@ -17,13 +17,28 @@
    normalize_norm.v bounds within 2.391e-7.
 
    Taken as a hypothesis, not proven here: the sine and cosine kernel's
-   relative errors, proven in sin_poly_tail.g / cos_poly_tail.g (1.0e-7 and 8e-8): s = Sin (1 + es)
-   and c = Cos (1 + ec) with |es|, |ec| <= 1.05e-7, Sin and Cos the exact
-   sine and cosine of one real angle (the reduced argument r + t, up to
-   the quadrant's exact swap and signs) (so Sin^2 + Cos^2 = 1;
-   which angle it is does not matter for the norm). The hypothesis is
-   about the default backend's kernel (src/float/sin_cos.rs); the libm
-   backend's sinf/cosf are outside this law.
+   relative errors, as the kernel (src/float/sin_cos.rs) puts its two
+   polynomials together. Both are evaluated at one (r, t), the exact
+   angle y = r + t; sin_poly_tail.g proves the sine polynomial within
+   1.0e-7 of sin y and cos_poly_tail.g the cosine polynomial within 8e-8
+   of cos y, relative. The kernel returns them either straight (s from
+   sin_poly, c from cos_poly: |x| <= pi/4, or an even quadrant of the
+   reduction) or swapped (s from cos_poly, c from sin_poly: pi/4 < |x|
+   <= 3 pi/4, or an odd quadrant), with exact sign flips. So, with Sin
+   and Cos the exact sine and cosine of one real angle (+-sin y and
+   +-cos y straight, +-cos y and +-sin y swapped; Sin^2 + Cos^2 = 1, and
+   which angle it is does not matter for the norm): either
+   |s - Sin| <= 1.0e-7 |Sin|, |c - Cos| <= 8e-8 |Cos| and
+   Sin^2 <= 0.5000001, or |s - Sin| <= 8e-8 |Sin|, |c - Cos| <= 1.0e-7
+   |Cos| and Cos^2 <= 0.5000001. The square of the sine polynomial's
+   exact value, sin(y)^2, is at most 0.5000001 because every (r, t) the
+   kernel evaluates has |r| <= PIO4_HI (0.78539819, pi/4 + 2.2e-8) and
+   |t| <= 2^-24 |r| (argued from the code and the reduction's range in
+   docs/verification-proofs.md, the domain of sin_poly_tail.g), so
+   |y| <= PIO4_HI (1 + 2^-24) < pi/4 + 7e-8 and sin(y)^2 = (1 +
+   sin(2 |y| - pi/2)) / 2 <= 1/2 + (|y| - pi/4) < 0.50000007. The
+   hypothesis is about the default backend's kernel; the libm backend's
+   sinf/cosf are outside this law.
 
    Proven here, in Coq alone (no Gappa certificate): the axis's root b
    within 1.4902e-7 (2.5 2^-24 and a little) of the exact norm N, relative
@@ -33,15 +48,18 @@
    2^-24; normalize.g's interval bound is 0x1.81p-23, 3.008 2^-24); the
    quotients' and the products' roundings, each within 2^-24 relative
    plus 2^-150 (Common.v's norm4_upper and norm4_lower, so that their
-   errors average, weighted by the components, rather than add up); and
-   the last step (last_step): |q|^2 = c^2 + |r|^2 lies between
-   Cos^2 L + Sin^2 L and Cos^2 H + Sin^2 H, with L and H the extreme
-   factors of the parts, a weighted average with weights Cos^2 and Sin^2
-   that sum to 1, not a sum. The terms are those of
+   errors average, weighted by the components, rather than add up), which
+   put |r|^2 between AL s^2 and AH s^2 (vector_part); and the last step:
+   |q|^2 = c^2 + |r|^2 lies between Cos^2 Lc + Sin^2 Ls and
+   Cos^2 Hc + Sin^2 Hs, with Lc, Hc the cosine's extreme factors and
+   Ls, Hs those of the vector part, a weighted average with weights Cos^2
+   and Sin^2 that sum to 1, not a sum. The sine polynomial's larger
+   error weighs at most 0.5000001, so where Sin^2 is near 1 the sine
+   carries the cosine polynomial's 8e-8. The terms are those of
    proofs/gappa/axis_angle.g (the correspondence test). *)
-(*! given sin_poly_tail.g sine <= 1.05e-7 the sine polynomial's relative error with its tail *)
-(*! given cos_poly_tail.g cosine <= 1.05e-7 the cosine polynomial's relative error with its tail *)
-(*! looser UNIT_NORM_ERROR axis_angle_norm <= 3.733e-7 | |from_axis_angle(axis, angle)| - 1 | and | |q.pow(alpha)| - 1 | for |alpha| <= f32::MAX / 4, given the sine and cosine kernel's relative errors within 1.05e-7 (proven in sin_poly_tail.g / cos_poly_tail.g (1.0e-7 and 8e-8)) *)
+(*! given sin_poly_tail.g sine <= 1.0e-7 the sine polynomial's relative error with its tail *)
+(*! given cos_poly_tail.g cosine <= 8e-8 the cosine polynomial's relative error with its tail *)
+(*! looser UNIT_NORM_ERROR axis_angle_norm <= 3.483e-7 | |from_axis_angle(axis, angle)| - 1 | and | |q.pow(alpha)| - 1 | for |alpha| <= f32::MAX / 4, given the sine polynomial's relative error within 1.0e-7 (sin_poly_tail.g) and the cosine polynomial's within 8e-8 (cos_poly_tail.g), the sine polynomial's exact value squared at most 0.5000001 *)
 Require Import Reals Psatz.
 Require Import Flocq.Core.Core.
 Require Import Gappa.Gappa_library.
@@ -176,29 +194,26 @@ Proof.
     apply Rmult_le_compat; lra.
 Qed.
 
-(* The last step, on the parts' bounds: the squared norm c^2 + |r|^2 lies
-   between Cos^2 L + Sin^2 L and Cos^2 H + Sin^2 H, with L and H the
-   extreme factors of the parts, and Cos^2 + Sin^2 = 1. *)
-Lemma last_step : forall uu et Sin Cos s c Q K P R R2,
+(* The vector part, on its parts' bounds: the rounded products' squared
+   length R2 lies between AL s^2 and AH s^2, up to 1e-28, with AL and AH
+   the extreme factors of the axis's length and the two roundings. *)
+Lemma vector_part : forall uu et s Q K P R R2,
   uu = / 16777216 -> 0 < et <= / 2 ^ 100 ->
-  Sin * Sin + Cos * Cos = 1 ->
-  (1 - 1.05e-7) * (1 - 1.05e-7) * (Sin * Sin) <= s * s <= (1 + 1.05e-7) * (1 + 1.05e-7) * (Sin * Sin) ->
-  (1 - 1.05e-7) * (1 - 1.05e-7) * (Cos * Cos) <= c * c <= (1 + 1.05e-7) * (1 + 1.05e-7) * (Cos * Cos) ->
+  s * s <= 1.000001 ->
   1 - 1.4903e-7 <= Q <= 1 + 1.4903e-7 ->
   0 <= K -> K <= (1 + uu) * Q + 2 * et -> (1 - uu) * (1 - uu) * (Q * Q) - 4 * et * Q <= K * K ->
   0 <= P -> P * P = s * s * (K * K) ->
   0 <= R -> R * R = R2 -> R <= (1 + uu) * P + 2 * et -> (1 - uu) * (1 - uu) * (P * P) - 4 * et * P <= R2 ->
-  Rabs (sqrt (c * c + R2) - 1) <= 3.733e-7.
+  (1 - / 16777216) * (1 - / 16777216) * ((1 - / 16777216) * (1 - / 16777216) * ((1 - 1.4903e-7) * (1 - 1.4903e-7)))
+    * (s * s) - 1e-28 <= R2 <=
+  (1 + / 16777216) * (1 + / 16777216)
+    * (((1 + / 16777216) * (1 + 1.4903e-7) + 2e-30) * ((1 + / 16777216) * (1 + 1.4903e-7) + 2e-30))
+    * (s * s) + 1e-28.
 Proof.
-  intros uu et Sin Cos s c Q K P R R2 Hu He Hunit [SLo SUp] [CLo CUp] [QLo QUp] HK0 KUp KLo HP0 HP2 HR0 HR RUp RLo.
+  intros uu et s Q K P R R2 Hu He Hss [QLo QUp] HK0 KUp KLo HP0 HP2 HR0 HR RUp RLo.
   subst uu.
   assert (Het : et <= 1e-30) by (simpl in He; lra).
-  assert (HSin : 0 <= Sin * Sin) by apply Rle_0_sqr.
-  assert (HCos : 0 <= Cos * Cos) by apply Rle_0_sqr.
-  assert (HSin1 : Sin * Sin <= 1) by lra.
-  assert (Hss : s * s <= 1.000001) by lra.
   assert (Hs0 : 0 <= s * s) by apply Rle_0_sqr.
-  assert (Hc0 : 0 <= c * c) by apply Rle_0_sqr.
   (* The axis's length. *)
   set (Kh := (1 + / 16777216) * (1 + 1.4903e-7) + 2e-30).
   assert (HKh : K <= Kh).
@@ -214,16 +229,15 @@ Proof.
     { assert (et * Q <= 1e-30 * 2) by (apply Rmult_le_compat; lra). lra. }
     unfold Kl2. lra. }
   (* The products' exact length. *)
-  assert (HP2h : P * P <= (1 + 1.05e-7) * (1 + 1.05e-7) * (Sin * Sin) * (Kh * Kh)).
-  { rewrite HP2. assert (0 <= K * K) by apply Rle_0_sqr. apply Rmult_le_compat; lra. }
-  assert (HP2l : (1 - 1.05e-7) * (1 - 1.05e-7) * (Sin * Sin) * Kl2 <= P * P).
-  { rewrite HP2. assert (0 <= Kl2) by (unfold Kl2; lra). apply Rmult_le_compat; lra. }
+  assert (HP2h : P * P <= s * s * (Kh * Kh)).
+  { rewrite HP2. apply Rmult_le_compat_l; lra. }
+  assert (HP2l : s * s * Kl2 <= P * P).
+  { rewrite HP2. apply Rmult_le_compat_l; lra. }
   assert (HP1 : P <= 2).
   { assert (P * P <= 1.01).
-    { assert ((1 + 1.05e-7) * (1 + 1.05e-7) * (Sin * Sin) <= 1.000001) by lra.
-      assert (Kh * Kh <= 1.000001) by (unfold Kh; lra).
-      assert ((1 + 1.05e-7) * (1 + 1.05e-7) * (Sin * Sin) * (Kh * Kh) <= 1.000001 * 1.000001)
-        by (apply Rmult_le_compat; try lra; apply Rmult_le_pos; lra).
+    { assert (Kh * Kh <= 1.000001) by (unfold Kh; lra).
+      assert (0 <= Kh * Kh) by apply Rle_0_sqr.
+      assert (s * s * (Kh * Kh) <= 1.000001 * 1.000001) by (apply Rmult_le_compat; lra).
       lra. }
     nra. }
   (* The rounded products' length. *)
@@ -235,45 +249,17 @@ Proof.
     assert (et * et <= 1e-30) by (assert (et * et <= 1e-30 * 1) by (apply Rmult_le_compat; lra); lra).
     lra. }
   assert (HR2l : (1 - / 16777216) * (1 - / 16777216) * (P * P) - 8e-30 <= R2) by lra.
-  apply abs_join. split.
-  - set (L := (1 - / 16777216) * (1 - / 16777216) * ((1 - 1.05e-7) * (1 - 1.05e-7))
-              * ((1 - / 16777216) * (1 - / 16777216) * ((1 - 1.4903e-7) * (1 - 1.4903e-7)))).
-    assert (HLS : L * (Sin * Sin) - 20e-30 <= R2).
-    { assert (E : (1 - / 16777216) * (1 - / 16777216) * ((1 - 1.05e-7) * (1 - 1.05e-7) * (Sin * Sin) * Kl2)
-                 = L * (Sin * Sin) - (1 - / 16777216) * (1 - / 16777216) * ((1 - 1.05e-7) * (1 - 1.05e-7)) * 8e-30 * (Sin * Sin))
-        by (unfold L, Kl2; ring).
-      assert ((1 - / 16777216) * (1 - / 16777216) * ((1 - 1.05e-7) * (1 - 1.05e-7) * (Sin * Sin) * Kl2)
-              <= (1 - / 16777216) * (1 - / 16777216) * (P * P)) by (apply Rmult_le_compat_l; lra).
-      lra. }
-    assert (HLC : L * (Cos * Cos) <= c * c).
-    { assert (L * (Cos * Cos) <= (1 - 1.05e-7) * (1 - 1.05e-7) * (Cos * Cos))
-        by (apply Rmult_le_compat_r; [lra|unfold L; lra]).
-      lra. }
-    assert (HL : (1 - 3.733e-7) * (1 - 3.733e-7) + 1e-20 <= L) by (unfold L; lra).
-    assert (Hsum : (1 - 3.733e-7) * (1 - 3.733e-7) <= c * c + R2).
-    { assert (L * (Cos * Cos) + L * (Sin * Sin) = L) by (rewrite <- Rmult_plus_distr_l; rewrite Rplus_comm, Hunit; ring).
-      lra. }
-    assert (Hsq : sqrt ((1 - 3.733e-7) * (1 - 3.733e-7)) <= sqrt (c * c + R2))
-      by (apply sqrt_le_1_alt; exact Hsum).
+  unfold Kh, Kl2 in *. split; lra.
+Qed.
+
+(* A root of n2 between (1 - D)^2 and (1 + D)^2 is within D of 1. *)
+Lemma root_near_one : forall n2 D, 0 <= D <= 1 -> (1 - D) * (1 - D) <= n2 <= (1 + D) * (1 + D) ->
+  Rabs (sqrt n2 - 1) <= D.
+Proof.
+  intros n2 D HD [Lo Hi]. apply abs_join. split.
+  - assert (Hsq : sqrt ((1 - D) * (1 - D)) <= sqrt n2) by (apply sqrt_le_1_alt; exact Lo).
     rewrite sqrt_square in Hsq by lra. lra.
-  - set (H := (1 + / 16777216) * (1 + / 16777216) * ((1 + 1.05e-7) * (1 + 1.05e-7)) * (Kh * Kh)).
-    assert (HHS : R2 <= H * (Sin * Sin) + 20e-30).
-    { assert ((1 + / 16777216) * (1 + / 16777216) * (P * P)
-              <= (1 + / 16777216) * (1 + / 16777216) * ((1 + 1.05e-7) * (1 + 1.05e-7) * (Sin * Sin) * (Kh * Kh)))
-        by (apply Rmult_le_compat_l; lra).
-      assert (E : (1 + / 16777216) * (1 + / 16777216) * ((1 + 1.05e-7) * (1 + 1.05e-7) * (Sin * Sin) * (Kh * Kh))
-                  = H * (Sin * Sin)) by (unfold H; ring).
-      lra. }
-    assert (HHC : c * c <= H * (Cos * Cos)).
-    { assert ((1 + 1.05e-7) * (1 + 1.05e-7) * (Cos * Cos) <= H * (Cos * Cos))
-        by (apply Rmult_le_compat_r; [lra|unfold H, Kh; lra]).
-      lra. }
-    assert (HH : H + 1e-20 <= (1 + 3.733e-7) * (1 + 3.733e-7)) by (unfold H, Kh; lra).
-    assert (Hsum : c * c + R2 <= (1 + 3.733e-7) * (1 + 3.733e-7)).
-    { assert (H * (Cos * Cos) + H * (Sin * Sin) = H) by (rewrite <- Rmult_plus_distr_l; rewrite Rplus_comm, Hunit; ring).
-      lra. }
-    assert (Hsq : sqrt (c * c + R2) <= sqrt ((1 + 3.733e-7) * (1 + 3.733e-7)))
-      by (apply sqrt_le_1_alt; exact Hsum).
+  - assert (Hsq : sqrt n2 <= sqrt ((1 + D) * (1 + D))) by (apply sqrt_le_1_alt; exact Hi).
     rewrite sqrt_square in Hsq by lra. lra.
 Qed.
 
@@ -283,8 +269,8 @@ Theorem axis_angle_norm : forall X Y Z Sin Cos s c : R,
   let z := rnd Z in
   1 <= x * x + y * y + z * z <= 4 ->
   Sin * Sin + Cos * Cos = 1 ->
-  Rabs (s - Sin) <= 1.05e-7 * Rabs Sin ->
-  Rabs (c - Cos) <= 1.05e-7 * Rabs Cos ->
+  (Rabs (s - Sin) <= 1.0e-7 * Rabs Sin /\ Rabs (c - Cos) <= 8e-8 * Rabs Cos /\ Sin * Sin <= 0.5000001)
+  \/ (Rabs (s - Sin) <= 8e-8 * Rabs Sin /\ Rabs (c - Cos) <= 1.0e-7 * Rabs Cos /\ Cos * Cos <= 0.5000001) ->
   let q := rnd (rnd (rnd (rnd (x * x) + rnd (y * y)) + rnd (z * z)) + rnd (0 * 0)) in
   let b := rnd (sqrt (q)) in
   let kx := rnd (x / b) in
@@ -293,9 +279,9 @@ Theorem axis_angle_norm : forall X Y Z Sin Cos s c : R,
   let rx := rnd (kx * s) in
   let ry := rnd (ky * s) in
   let rz := rnd (kz * s) in
-  Rabs (sqrt (c * c + rx * rx + ry * ry + rz * rz) - 1) <= 3.733e-7.
+  Rabs (sqrt (c * c + rx * rx + ry * ry + rz * rz) - 1) <= 3.483e-7.
 Proof.
-  intros X Y Z Sin Cos s c x y z HS Hunit Hs Hc q b kx ky kz rx ry rz.
+  intros X Y Z Sin Cos s c x y z HS Hunit Hsc q b kx ky kz rx ry rz.
   pose proof u_pos as Hu0; pose proof eta_pos as He0.
   assert (Heta : 0 < eta <= / 2 ^ 100) by (split; [lra|unfold eta; simpl; lra]).
   (* The root (axis_root). *)
@@ -361,12 +347,25 @@ Proof.
     assert (0 <= rz * rz) by apply Rle_0_sqr. lra. }
   assert (Hq : c * c + rx * rx + ry * ry + rz * rz = c * c + R2) by (unfold R2; ring).
   rewrite Hq.
-  (* The kernel's hypothesis, squared, and the last step. *)
-  assert (He : 0 <= 1.05e-7 <= 1) by lra.
-  apply (last_step u eta Sin Cos s c Q K P (sqrt R2) R2); try easy.
-  - apply sq_rel; assumption.
-  - apply sq_rel; assumption.
-  - apply sqrt_pos.
-  - apply sqrt_pos.
-  - apply sqrt_pos.
+  (* The kernel's hypothesis, squared: in either case s within 1.0e-7 of
+     Sin, relative, so s^2 <= 1.000001, which the vector part takes. *)
+  assert (Hs : Rabs (s - Sin) <= 1.0e-7 * Rabs Sin).
+  { assert (0 <= Rabs Sin) by apply Rabs_pos. destruct Hsc as [[Hk _]|[Hk _]]; lra. }
+  assert (HSin : 0 <= Sin * Sin) by apply Rle_0_sqr.
+  assert (HCos : 0 <= Cos * Cos) by apply Rle_0_sqr.
+  assert (Hss : s * s <= 1.000001).
+  { pose proof (sq_rel s Sin 1.0e-7 ltac:(lra) Hs) as [_ Hk]. lra. }
+  pose proof (vector_part u eta s Q K P (sqrt R2) R2 eq_refl Heta Hss (conj HQl HQh) (sqrt_pos _) KUp KLo
+                (sqrt_pos _) HP2 (sqrt_pos _) HR RUp RLo) as [VLo VUp].
+  (* The last step: c^2 + R2 lies between Cos^2 Lc + Sin^2 Ls and
+     Cos^2 Hc + Sin^2 Hs, a weighted average (Cos^2 + Sin^2 = 1) in which
+     the sine polynomial's larger error weighs at most 0.5000001. *)
+  apply root_near_one; [lra|].
+  destruct Hsc as [[Hs' [Hc Hw]]|[Hs' [Hc Hw]]].
+  - pose proof (sq_rel s Sin 1.0e-7 ltac:(lra) Hs') as [SLo SUp].
+    pose proof (sq_rel c Cos 8e-8 ltac:(lra) Hc) as [CLo CUp].
+    split; lra.
+  - pose proof (sq_rel s Sin 8e-8 ltac:(lra) Hs') as [SLo SUp].
+    pose proof (sq_rel c Cos 1.0e-7 ltac:(lra) Hc) as [CLo CUp].
+    split; lra.
 Qed.
