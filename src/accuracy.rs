@@ -76,7 +76,7 @@ mod backend {
     pub const ATAN2_MAX_ABS_ERROR: f32 = 3.2e-7; // 2.667e-7 (every f32 quotient, near pi; the kernel is within 1.6 ulp)
     pub const SIN_COS_MAX_ABS_ERROR: f32 = 6.4e-8; // 5.760e-8 at 2.359356 (every f32 of [-10, 10])
     pub const TAN_MAX_REL_ERROR: f32 = 1.2e-7; // 7.745e-8 at 0.12439033 (every f32 of [0.0087, 1.5621])
-    pub const UNIT_NORM_ERROR: f32 = 3.5e-7; // 2.572e-7 (slerp, random pairs); 1.9720e-7 (a product, relative to |a| |b|, by search; 2.84e-7 proven); 2.4337e-7 (from_axis_angle, by search; 3.483e-7 proven given the sine and cosine polynomials' relative errors)
+    pub const UNIT_NORM_ERROR: f32 = 3.5e-7; // 2.572e-7 (slerp, random pairs); 1.9720e-7 (a product, relative to |a| |b|, by search; 2.84e-7 proven); 2.4337e-7 (from_axis_angle, by search; 3.483e-7 proven)
     pub const POW_MAX_ANGLE_ERROR: f32 = 3.4e-7; // 2.580e-7 (pow), 2.725e-7 (to_axis_angle), 2.968e-7 (pow, search); 1.03e-6 proven given swept kernels
     pub const SLERP_MAX_ANGLE_ERROR: f32 = 5.2e-7; // 4.106e-7 (random pairs, alpha in [-1, 2])
     pub const FROM_SCALED_AXIS_MAX_REL_ERROR: f32 = 3.0e-7; // 2.426e-7
@@ -224,8 +224,9 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// inputs, relative to the nearest norm between its inputs' (`|r| / n -
 /// 1` with `n` the nearest value of `[min(|a|, |b|), max(|a|, |b|)]` to
 /// `|r|`: the result's norm moves from `|a|` to `|b|`, whose ratio for two
-/// results of `normalize` is 1 only within twice its error); for `*`, relative to the product of the inputs' norms,
-/// `| |a * b| / (|a| |b|) - 1 |`. The inputs' own distance from unit norm
+/// results of `normalize` is 1 only within twice its error); for `*`,
+/// relative to the product of the inputs' norms, `| |a * b| / (|a| |b|) -
+/// 1 |`. The inputs' own distance from unit norm
 /// carries through a product: for two results of `normalize`, `|a * b|`
 /// is within `(1 + NORMALIZE_MAX_NORM_ERROR)^2 (1 + UNIT_NORM_ERROR) - 1`
 /// (8.3e-7) of 1, and a search found 4.6884e-7 (`proofs/tests/worst_cases.rs`).
@@ -244,10 +245,11 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// `slerp`'s f32 evaluation (every target without the f64 one, and the
 /// inputs that one leaves) `proofs/coq/slerp_endpoint_norm_f32.v` proves,
 /// at `alpha = 1` (angles above 2^-12, given the sine kernel within
-/// 1.05e-7 relative, which `sin_poly_tail.g` proves), 1.193e-7 relative
+/// 1.05e-7 relative, which `sin_poly_tail.g` and `cos_poly_tail.g` prove), 1.193e-7 relative
 /// to `|b|` (a search: 1.0744e-7); the rest of `slerp` has no proof. A
-/// search of the f32 evaluation (`deep_slerp_f32_search`) finds 2.5020e-7 (`alpha` in [0, 1]) and 2.9384e-7 (extrapolating)
-/// against the range of the inputs' norms. For `slerp`'s f64 path
+/// search of the f32 evaluation (`deep_slerp_f32_search`) finds 2.5020e-7
+/// (`alpha` in [0, 1]) and 2.9384e-7 (extrapolating) against the range of
+/// the inputs' norms. For `slerp`'s f64 path
 /// (x86-64 and AArch64, `alpha` in (0, 1]), `proofs/coq/slerp_norm_f64.v`
 /// proves 2.45e-7 relative to the mean of the inputs' norms that the exact
 /// coefficients weigh (Coq; the angle from `proofs/gappa/slerp_angle_f64.g`,
