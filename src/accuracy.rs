@@ -251,11 +251,11 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// (`alpha` in [0, 1]) and 2.9384e-7 (extrapolating) against the range of
 /// the inputs' norms. For `slerp`'s f64 path
 /// (x86-64 and AArch64, `alpha` in (0, 1]), `proofs/coq/slerp_norm_f64.v`
-/// proves 2.45e-7 relative to the mean of the inputs' norms that the exact
+/// proves 2.2e-7 relative to the mean of the inputs' norms that the exact
 /// coefficients weigh (Coq; the angle from `proofs/gappa/slerp_angle_f64.g`,
 /// the coefficients from `coefficient_f64.g` and `coefficient_rest_f64.g`),
 /// which lies in their range, and the search found 1.5033e-7 against that
-/// mean (ratio 1.63: not counted as this constant's proof) and 1.5332e-7
+/// mean (ratio 1.46; a looser bound of this constant on that path) and 1.5332e-7
 /// against the range (`deep_slerp_f64_norm_search`). The largest over
 /// random draws is 2.572e-7.
 pub const UNIT_NORM_ERROR: f32 = backend::UNIT_NORM_ERROR;
