@@ -153,6 +153,33 @@ pub fn leibniz_expansion(m: &[f64], n: usize) -> (f64, f64) {
     (det, total)
 }
 
+/// The head and tail at which the sine and cosine kernel's narrow path
+/// (`sin_cos_quarter` in `src/float/sin_cos.rs`) evaluates its polynomials
+/// for `0 <= a <= 3 pi/4`: `(a, 0)` up to pi/4; beyond, the head `pi/2 -
+/// a` (exact, Sterbenz) and the tail of pi/2 added by Fast2Sum, where the
+/// cosine polynomial gives the sine and the sine polynomial the cosine.
+/// Returns `(r, t, swapped)`.
+///
+/// ```
+/// use rigtform_proofs::reference::narrow_head_and_tail;
+/// assert_eq!(narrow_head_and_tail(0.5), (0.5, 0.0, false));
+/// let (r, t, swapped) = narrow_head_and_tail(1.5);
+/// // pi/2 - 1.5 within the tail of pi/2's own rounding (2^-49).
+/// assert!(swapped && (f64::from(r) + f64::from(t) - (core::f64::consts::FRAC_PI_2 - 1.5)).abs() < 2e-15);
+/// ```
+pub fn narrow_head_and_tail(a: f32) -> (f32, f32, bool) {
+    // pi/2 rounded to f32, and the rest rounded to f32 (the kernel's
+    // PIO2_HI and PIO2_LO).
+    let (half, half_lo) = (core::f32::consts::FRAC_PI_2, f32::from_bits(0xb33b_bd2e));
+    if a > core::f32::consts::FRAC_PI_4 {
+        let head = half - a;
+        let r = head + half_lo;
+        (r, (head - r) + half_lo, true)
+    } else {
+        (a, 0.0, false)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -890,9 +890,8 @@ fn polynomials_with_their_tail_are_sin_and_cos_poly_tail_g() {
     };
     assert_eq!(sin.inputs, ["r", "t"]);
     assert_eq!(cos.inputs, ["r", "t"]);
+    use rigtform_proofs::reference::narrow_head_and_tail;
     let (quarter, half) = (core::f32::consts::FRAC_PI_4, core::f32::consts::FRAC_PI_2);
-    // pi/2 - FRAC_PI_2 rounded to f32, the kernel's PIO2_LO.
-    let half_lo = f32::from_bits(0xb33b_bd2e);
     let three_quarters = 2.356_194_3f32;
     let mut d = Draws::new(23);
     let ends = [
@@ -913,13 +912,8 @@ fn polynomials_with_their_tail_are_sin_and_cos_poly_tail_g() {
     });
     for a in ends.into_iter().chain(drawn) {
         let (s, c) = kani_kernels::sin_cos(a);
-        let ((r, t), (of_sin, of_cos)) = if a > quarter {
-            let head = half - a;
-            let r = head + half_lo;
-            ((r, (head - r) + half_lo), (c, s))
-        } else {
-            ((a, 0.0), (s, c))
-        };
+        let (r, t, swapped) = narrow_head_and_tail(a);
+        let (of_sin, of_cos) = if swapped { (c, s) } else { (s, c) };
         let inputs = [f64::from(r), f64::from(t)];
         check(&sin, &sin.run(&inputs), "y", of_sin, &[r, t]);
         check(&cos, &cos.run(&inputs), "y", of_cos, &[r, t]);

@@ -1174,21 +1174,14 @@ const COS_POLY_TAIL_LAW: f64 = 8e-8;
 /// them, whose cosine is the kernel's sine. Measured in f64, where `r + t`
 /// is exact and sin and cos are within 2^-52.
 fn polynomial_tail_errors(step: usize) -> (f64, f64) {
-    let (quarter, half) = (core::f32::consts::FRAC_PI_4, core::f32::consts::FRAC_PI_2);
-    // pi/2 - FRAC_PI_2 rounded to f32, the kernel's PIO2_LO.
-    let half_lo = f32::from_bits(0xb33b_bd2e);
+    use rigtform_proofs::reference::narrow_head_and_tail;
     let three_quarters = 2.356_194_3f32;
     let (mut sin_worst, mut cos_worst) = (0f64, 0f64);
     for bits in (1..=three_quarters.to_bits()).step_by(step) {
         let a = f32::from_bits(bits);
         let (s, c) = rigtform::kani_kernels::sin_cos(a);
-        let ((r, t), (of_sin, of_cos)) = if a > quarter {
-            let head = half - a;
-            let r = head + half_lo;
-            ((r, (head - r) + half_lo), (c, s))
-        } else {
-            ((a, 0.0), (s, c))
-        };
+        let (r, t, swapped) = narrow_head_and_tail(a);
+        let (of_sin, of_cos) = if swapped { (c, s) } else { (s, c) };
         let y = f64::from(r) + f64::from(t);
         let rel = |got: f32, want: f64| ((f64::from(got) - want) / want).abs();
         sin_worst = sin_worst.max(rel(of_sin, y.sin()));
