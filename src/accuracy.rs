@@ -131,9 +131,12 @@ pub const ATAN_POLY_MAX_ULP: f32 = 1.0; // 0.821 at 0.5461395
 /// the approximation errors, `cos_poly.sollya`, `sin_poly.sollya`); below
 /// 2^-9 the sine has no model (one per binade would be needed, for the
 /// reason of [`ATAN_POLY_MAX_ULP`]). Relative to the sine and cosine of
-/// `r + t`, with the tail, over every `(r, t)` the kernel evaluates
-/// (subnormal `r` included), `sin_poly_tail.g` proves 1.0e-7 and
-/// `cos_poly_tail.g` 8e-8.
+/// `r + t`, with the tail, Gappa (certificates checked by coqc) proves
+/// 1.0e-7 (`sin_poly_tail.g`, `r` in [2^-149, 0.7854]) and 8e-8
+/// (`cos_poly_tail.g`, `r` in [0, 0.7854]) for `|t| <= 2^-24 |r|`; that
+/// every `(r, t)` the kernel evaluates lies there is argued from the code
+/// (`docs/verification-proofs.md`) and checked by the sweep, negative `r`
+/// by the polynomials' symmetry, and `r = 0` is exact.
 pub const SIN_COS_POLY_MAX_ULP: f32 = 1.0; // sin 0.805 at 0.7828049, cos 0.749 at 0.7086515
 /// The sine and cosine kernel, in ulps, on [-3 pi/4, 3 pi/4]: every angle
 /// `slerp` hands it for `alpha` in [0, 1].
@@ -244,8 +247,10 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// 2.4337e-7 (`from_axis_angle`) and 2.2764e-7 (`pow`). For
 /// `slerp`'s f32 evaluation (every target without the f64 one, and the
 /// inputs that one leaves) `proofs/coq/slerp_endpoint_norm_f32.v` proves,
-/// at `alpha = 1` (angles above 2^-12, given the sine kernel within
-/// 1.05e-7 relative, which `sin_poly_tail.g` and `cos_poly_tail.g` prove), 1.193e-7 relative
+/// at `alpha = 1` (angles above 2^-12; its hypothesis that the computed
+/// sine lies in [2^-13, 1] follows, by a calculation in its header, from
+/// the polynomials' relative errors `sin_poly_tail.g` and `cos_poly_tail.g`
+/// prove), 1.193e-7 relative
 /// to `|b|` (a search: 1.0744e-7); the rest of `slerp` has no proof. A
 /// search of the f32 evaluation (`deep_slerp_f32_search`) finds 2.5020e-7
 /// (`alpha` in [0, 1]) and 2.9384e-7 (extrapolating) against the range of
