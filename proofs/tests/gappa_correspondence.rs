@@ -920,6 +920,47 @@ fn polynomials_with_their_tail_are_sin_and_cos_poly_tail_g() {
     }
 }
 
+/// atan_poly.g and atan_poly_tiny.g (one computation, its domain split
+/// between the two): the arctangent polynomial as the atan2 kernel
+/// evaluates it, through `atan2(u, 1)`, whose lower branch takes every
+/// `u` in [0, tan(1/2)] (the quotient `u / 1` is `u`, and the head and
+/// tail added are 0), so that the kernel's result is `atan_poly(u)` (raw
+/// bit patterns of each model's range, uniform draws, and the ends).
+#[test]
+fn arctangent_polynomial_is_atan_poly_g() {
+    let tan_half = 0.546_302_5f32;
+    let tiny = 2f32.powi(-40);
+    for (name, lo, hi) in [("atan_poly", tiny, tan_half), ("atan_poly_tiny", 0.0, tiny)] {
+        let Some(m) = model(name, Code::F32) else {
+            continue;
+        };
+        assert_eq!(m.inputs, ["u"]);
+        let mut d = Draws::new(29);
+        let ends = [
+            lo,
+            hi,
+            f32::from_bits(hi.to_bits() - 1),
+            f32::from_bits(1),
+            f32::MIN_POSITIVE,
+        ];
+        let drawn = (0..DRAWS / 2).map(|i| {
+            if i % 2 == 0 {
+                d.uniform(lo, hi)
+            } else {
+                f32::from_bits(lo.to_bits() + d.next_u32() % (hi.to_bits() - lo.to_bits() + 1))
+            }
+        });
+        for u in ends
+            .into_iter()
+            .filter(|u| (lo..=hi).contains(u))
+            .chain(drawn)
+        {
+            let out = m.run(&[f64::from(u)]);
+            check(&m, &out, "y", kani_kernels::atan2(u, 1.0), &[u]);
+        }
+    }
+}
+
 /// sin_poly_hi.g, sin_poly_mid.g and sin_poly_low.g (one computation, its
 /// binades split among three models): the kernel's sine for every argument
 /// in [0, pi/4], where it is the polynomial with the tail 0.

@@ -1212,6 +1212,49 @@ fn every_polynomial_tail_within_its_law() {
     polynomial_tail_within_the_laws(1);
 }
 
+/// The proven relative error of the atan2 kernel's arctangent polynomial
+/// (`atan_poly.g` and `atan_poly_tiny.g`, the `#! law` goals).
+const ATAN_POLY_LAW: f64 = 8.8e-8;
+
+/// The largest relative error of the kernel's arctangent polynomial against
+/// atan(u), over every `step`-th positive f32 `u` up to tan(1/2), and the
+/// `u` where it is: through `atan2(u, 1)`, whose lower branch is
+/// `atan_poly(u)` there (`arctangent_polynomial_is_atan_poly_g` in the
+/// correspondence test). Measured in f64, where atan is within 2^-52.
+fn atan_poly_error(step: usize) -> (f64, f32) {
+    let tan_half = 0.546_302_5f32;
+    let mut worst = (0f64, 0f32);
+    for bits in (1..=tan_half.to_bits()).step_by(step) {
+        let u = f32::from_bits(bits);
+        let want = f64::from(u).atan();
+        let got = f64::from(rigtform::kani_kernels::atan2(u, 1.0));
+        let rel = ((got - want) / want).abs();
+        if rel > worst.0 {
+            worst = (rel, u);
+        }
+    }
+    worst
+}
+
+/// Fails unless the error found stays within the proven law, and the law
+/// within 4 times what is found.
+fn atan_poly_within_the_law(step: usize) {
+    let (found, u) = atan_poly_error(step);
+    println!("atan_poly(u), relative to atan(u): {found:.4e} at u = {u:e} (law {ATAN_POLY_LAW:e})");
+    assert!(found <= ATAN_POLY_LAW && ATAN_POLY_LAW <= 4.0 * found);
+}
+
+#[test]
+fn arctangent_polynomial_stays_within_its_law() {
+    atan_poly_within_the_law(997);
+}
+
+#[test]
+#[ignore = "a minute in release: every f32 of [0, tan(1/2)]"]
+fn every_arctangent_polynomial_within_its_law() {
+    atan_poly_within_the_law(1);
+}
+
 /// `| |from_axis_angle(axis, angle)| - 1 |` at `[x, y, z, angle]` (0 where
 /// the result is not finite).
 fn axis_angle_deviation(v: [f32; 4]) -> f64 {
