@@ -120,10 +120,10 @@ pub const ATAN2_MAX_ULP: f32 = 1.6; // 1.597 at u = 0.5049959 (every quotient, t
 /// Known: swept: every f32 of [0, tan(1/2)] (`exhaustive_kernel_sweep`). Not
 /// proven in ulps: that needs the result's binade, which a Gappa model would
 /// split by. Relative to atan(u), Gappa (certificates checked by coqc) proves
-/// 8.8e-8 for every f32 u in [2^-149, tan(1/2)] (`atan_poly.g`,
+/// 8.8e-8 for every f32 u from 2^-149 to the f32 above tan(1/2) (`atan_poly.g`,
 /// `atan_poly_tiny.g`, with Sollya's bound of the approximation error,
-/// `atan_poly.sollya`); negative u by symmetry, u = 0 exact. Every f32
-/// reaches 6.3852e-8.
+/// `atan_poly.sollya`); negative u by symmetry, u = 0 exact. The largest
+/// over every f32 of [0, tan(1/2)] is 6.3852e-8 (`worst_cases.rs`).
 pub const ATAN_POLY_MAX_ULP: f32 = 1.0; // 0.821 at 0.5461395
 /// The sine and cosine polynomials inside the sine and cosine kernel, in
 /// ulps, on [0, pi/4].

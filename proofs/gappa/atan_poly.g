@@ -5,9 +5,12 @@
 # (the code's u (s p) is the line m).
 # Its error relative to atan(u), over the f32 u the kernel hands it.
 #
-# Domain: every f32 u in [2^-40, tan(1/2)] (TAN_HALF, 0x1.17b4f6p-1, the
-# bound of the kernel's outer branches; the middle branch's quotient is
-# smaller, at most 0.2934 in magnitude). atan_poly_tiny.g covers
+# Domain: every f32 u in [2^-40, 0x1.17b4f8p-1]: up to tan(1/2) (TAN_HALF,
+# 0x1.17b4f6p-1, the bound of the kernel's outer branches) and the f32
+# above it, which an outer branch's quotient rounds to where the exact
+# ratio exceeds TAN_HALF by less than 2^-24 of it (the branch's test rounds
+# its product); the middle branch's quotient is at most 0.2934 in
+# magnitude. atan_poly_tiny.g covers
 # [2^-149, 2^-40] with the same computation; the two are one model split
 # by domain, since Gappa's certificate for one domain with all the splits
 # is several times the sum of the two. Negative u: atan_poly(-u) =
@@ -16,10 +19,10 @@
 # that of |u|. u = 0 gives 0 = atan(0) exactly.
 #
 # At stands for atan(u) = u Wa, with Wa = atan(u) / u decreasing from 1
-# (at 0) to 0.91524 (at TAN_HALF), so in [0.915, 1] (a fact of calculus,
+# (at 0) to 0.91524 (at 0x1.17b4f8p-1), so in [0.915, 1] (a fact of calculus,
 # stated here, not proven by Gappa). The approximation error of the exact
-# polynomial P against atan(u) is Sollya's (atan_poly.sollya: 2.46057e-9
-# relative over [2^-149, TAN_HALF], rounded up here to 2.461e-9).
+# polynomial P against atan(u) is Sollya's (atan_poly.sollya: 2.46059e-9
+# relative over [2^-149, 0x1.17b4f8p-1], rounded up here to 2.461e-9).
 #
 # Proven: |y - atan(u)| <= 8.8e-8 atan(u) over the domain. Gappa splits u
 # where the `$` line says; the last rounding's error relative to the
@@ -27,7 +30,7 @@
 # (atan(u) crosses 0.5 at u = tan(1/2), just below TAN_HALF).
 #
 #! sollya atan_poly.sollya 2.461e-9
-#! law - (y - At) / At in [-8.8e-8, 8.8e-8] the arctangent polynomial relative to atan(u), every f32 u in [2^-40, tan(1/2)]
+#! law - (y - At) / At in [-8.8e-8, 8.8e-8] the arctangent polynomial relative to atan(u), every f32 u in [2^-40, 0x1.17b4f8p-1]
 @rnd = float<ieee_32, ne>;
 
 u = rnd(U);
@@ -46,7 +49,7 @@ P = u + Q;
 z = u + m;
 At = u * Wa;
 
-{ u in [1b-40, 0x1.17b4f6p-1] /\ Wa in [0.915, 1]
+{ u in [1b-40, 0x1.17b4f8p-1] /\ Wa in [0.915, 1]
   /\ (P - At) / At in [-2.461e-9, 2.461e-9]
   ->
   (y - At) / At in [-8.8e-8, 8.8e-8]
