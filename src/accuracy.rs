@@ -73,7 +73,7 @@
 /// The bounds that depend on the f32 kernels of `src/float/`: measured
 /// maxima over 10^7 draws in the comments, rounded up by about 25 %.
 mod backend {
-    pub const ATAN2_MAX_ABS_ERROR: f32 = 3.2e-7; // 2.667e-7 (every f32 quotient, near pi; the kernel is within 1.6 ulp)
+    pub const ATAN2_MAX_ABS_ERROR: f32 = 3.2e-7; // 2.667e-7 (every f32 quotient, near pi; the kernel is within 1.6 ulp); 3.16e-7 proven
     pub const SIN_COS_MAX_ABS_ERROR: f32 = 6.4e-8; // 5.760e-8 at 2.359356 (every f32 of [-10, 10])
     pub const TAN_MAX_REL_ERROR: f32 = 1.2e-7; // 7.745e-8 at 0.12439033 (every f32 of [0.0087, 1.5621])
     pub const UNIT_NORM_ERROR: f32 = 3.5e-7; // 2.572e-7 (slerp, random pairs); 1.9720e-7 (a product, relative to |a| |b|, by search; 2.84e-7 proven); 2.4337e-7 (from_axis_angle, by search; 3.483e-7 proven)
@@ -123,7 +123,8 @@ pub const ATAN2_MAX_ULP: f32 = 1.6; // 1.597 at u = 0.5049959 (every quotient, t
 /// 8.8e-8 for every f32 u from 2^-149 to the f32 above tan(1/2) (`atan_poly.g`,
 /// `atan_poly_tiny.g`, with Sollya's bound of the approximation error,
 /// `atan_poly.sollya`); negative u by symmetry, u = 0 exact. The largest
-/// over every f32 of [0, tan(1/2)] is 6.3852e-8 (`worst_cases.rs`).
+/// over every f32 of [0, tan(1/2)] is 6.3852e-8 (`worst_cases.rs`). The
+/// proof of [`ATAN2_MAX_ABS_ERROR`] takes that relative bound.
 pub const ATAN_POLY_MAX_ULP: f32 = 1.0; // 0.821 at 0.5461395
 /// The sine and cosine polynomials inside the sine and cosine kernel, in
 /// ulps, on [0, pi/4].
@@ -202,8 +203,16 @@ pub const SLERP_COEFFICIENT_F64_MAX_REL_ERROR: f32 = 4.1e-8; // 2.169e-8 at t2 =
 /// Absolute error, in radians, of the atan2 kernel, for every pair of
 /// finite arguments.
 ///
-/// Known: swept: every f32 quotient of each branch, as [`ATAN2_MAX_ULP`]
-/// (2.667e-7 at u = -0.54528743, a result near pi), rounded up.
+/// Known: proven: `proofs/gappa/atan2_outer.g` (the lower and upper
+/// branches) and `atan2_middle.g` prove 3.16e-7 against the angle of the
+/// exact arguments, every sign, given the polynomial's error relative to
+/// atan(u) that `atan_poly.g` and `atan_poly_tiny.g` prove (8.8e-8), and
+/// steps argued on paper in the models' headers (the mean value theorem
+/// for the quotient's rounding, the branches' ranges, one rounding on the
+/// grid of its argument, the arguments at the ends of the ranges). The
+/// sweep of every f32 quotient of each branch, as [`ATAN2_MAX_ULP`], finds
+/// 2.667e-7 at u = -0.54528743 (a result near pi), a search of argument
+/// pairs 2.6299e-7.
 pub const ATAN2_MAX_ABS_ERROR: f32 = backend::ATAN2_MAX_ABS_ERROR;
 /// Absolute error of the sine and cosine kernel on [-10, 10].
 ///

@@ -961,6 +961,113 @@ fn arctangent_polynomial_is_atan_poly_g() {
     }
 }
 
+/// The atan2 kernel's branch for `b = |y|`, `a = |x|` (0 lower, 1 upper,
+/// 2 middle), its scaled arguments and its quotient, as
+/// `src/float/atan2.rs` computes them for finite, nonzero arguments.
+fn atan2_branch(b: f32, a: f32) -> (u8, f32, f32, f32) {
+    let tan_half = 0.546_302_5f32;
+    let scale = if b > 1.0 { 0.25 } else { 2f32.powi(60) };
+    let (qb, qa) = (b * scale, a * scale);
+    if qb <= qa * tan_half {
+        (0, qb, qa, b / a)
+    } else if qa <= qb * tan_half {
+        (1, qb, qa, -a / b)
+    } else {
+        (2, qb, qa, (qb - qa) / (qb + qa))
+    }
+}
+
+/// `atan_poly(u)` for `|u| <= tan(1/2)`: the kernel's lower branch,
+/// `atan2(|u|, 1)` (`arctangent_polynomial_is_atan_poly_g`), with the sign
+/// of `u` (the polynomial is odd, bit for bit).
+fn atan_poly_of(u: f32) -> f32 {
+    kani_kernels::atan2(u.abs(), 1.0).copysign(u)
+}
+
+/// Pairs `(b, a)` of positive f32 at every scale, one over the other drawn
+/// in [0, 1.9] and either way round, so that every branch is taken.
+fn atan2_pairs(seed: u64) -> impl Iterator<Item = (f32, f32)> {
+    let mut d = Draws::new(seed);
+    (0..DRAWS).map(move |i| {
+        let a = 2f32.powi(d.below(200) as i32 - 100) * d.uniform(1.0, 2.0);
+        let b = a * d.uniform(0.0, 1.9);
+        if i % 2 == 0 {
+            (b, a)
+        } else {
+            (a, b)
+        }
+    })
+}
+
+/// atan2_outer.g: the kernel's lower and upper branches, each result and
+/// its negative-`x` counterpart, from the quotient and the polynomial's
+/// result (random pairs of every scale in either branch).
+#[test]
+fn atan2_outer_branches_are_atan2_outer_g() {
+    let Some(m) = model("atan2_outer", Code::F32) else {
+        return;
+    };
+    assert_eq!(m.inputs, ["ul", "yl", "uh", "yh"]);
+    let mut seen = [0usize; 2];
+    for (b, a) in atan2_pairs(31) {
+        let (branch, _, _, u) = atan2_branch(b, a);
+        if branch == 2 || u.abs() > 0.546_302_5 || b == 0.0 {
+            continue;
+        }
+        seen[usize::from(branch)] += 1;
+        let y = atan_poly_of(u);
+        let (pos, neg) = (kani_kernels::atan2(b, a), kani_kernels::atan2(b, -a));
+        let (u, y) = (f64::from(u), f64::from(y));
+        if branch == 0 {
+            let out = m.run(&[u, y, -0.5, -0.5]);
+            check(&m, &out, "pl", pos, &[b, a]);
+            check(&m, &out, "rl", neg, &[b, -a]);
+        } else {
+            let out = m.run(&[0.5, 0.5, u, y]);
+            check(&m, &out, "ph", pos, &[b, a]);
+            check(&m, &out, "rh", neg, &[b, -a]);
+        }
+    }
+    assert!(seen.iter().all(|&n| n > DRAWS / 10), "{seen:?}");
+}
+
+/// atan2_middle.g: the kernel's middle branch, each result and its
+/// negative-`x` counterpart, from the exact difference, the rounded sum
+/// and the polynomial's result, for `b > a` (its p variables) and `b < a`
+/// (its n variables).
+#[test]
+fn atan2_middle_branch_is_atan2_middle_g() {
+    let Some(m) = model("atan2_middle", Code::F32) else {
+        return;
+    };
+    assert_eq!(m.inputs, ["dp", "ep", "yp", "dn", "en", "yn"]);
+    let mut seen = [0usize; 2];
+    for (b, a) in atan2_pairs(37) {
+        let (branch, qb, qa, u) = atan2_branch(b, a);
+        if branch != 2 || qb == qa {
+            continue;
+        }
+        let (d, e, y) = (
+            f64::from(qb - qa),
+            f64::from(qb + qa),
+            f64::from(atan_poly_of(u)),
+        );
+        let (pos, neg) = (kani_kernels::atan2(b, a), kani_kernels::atan2(b, -a));
+        if d > 0.0 {
+            seen[0] += 1;
+            let out = m.run(&[d, e, y, -1.0, 4.0, -0.25]);
+            check(&m, &out, "pp", pos, &[b, a]);
+            check(&m, &out, "rp", neg, &[b, -a]);
+        } else {
+            seen[1] += 1;
+            let out = m.run(&[1.0, 4.0, 0.25, d, e, y]);
+            check(&m, &out, "pn", pos, &[b, a]);
+            check(&m, &out, "rn", neg, &[b, -a]);
+        }
+    }
+    assert!(seen.iter().all(|&n| n > DRAWS / 10), "{seen:?}");
+}
+
 /// sin_poly_hi.g, sin_poly_mid.g and sin_poly_low.g (one computation, its
 /// binades split among three models): the kernel's sine for every argument
 /// in [0, pi/4], where it is the polynomial with the tail 0.

@@ -1255,6 +1255,64 @@ fn every_arctangent_polynomial_within_its_law() {
     atan_poly_within_the_law(1);
 }
 
+/// The atan2 kernel's proven absolute error: the largest goal of
+/// `atan2_outer.g` and `atan2_middle.g` (`#! bound ATAN2_MAX_ABS_ERROR`).
+const ATAN2_PROVEN: f64 = 3.16e-7;
+
+/// The largest absolute error of the atan2 kernel against the f64 atan2 of
+/// its arguments over `draws` random pairs of every scale, sign and branch
+/// (one argument over the other in [0, 1.9], either way round), then
+/// climbing from the worst of them one argument's last bits at a time.
+fn atan2_search(draws: usize, seed: u64) -> (f64, [f32; 2]) {
+    let error = |v: [f32; 2]| {
+        let got = f64::from(rigtform::kani_kernels::atan2(v[0], v[1]));
+        let e = (got - f64::from(v[0]).atan2(f64::from(v[1]))).abs();
+        if e.is_finite() {
+            e
+        } else {
+            0.0
+        }
+    };
+    let mut d = Draws::new(seed);
+    let mut worst = (0f64, [0f32; 2]);
+    for i in 0..draws {
+        let a = 2f32.powi(d.below(200) as i32 - 100) * d.uniform(1.0, 2.0);
+        let b = a * d.uniform(0.0, 1.9);
+        let (y, x) = if i % 2 == 0 { (b, a) } else { (a, b) };
+        let v = [y, if d.below(2) == 0 { x } else { -x }];
+        let e = error(v);
+        if e > worst.0 {
+            worst = (e, v);
+        }
+    }
+    let (v, e) = climb(&mut d, worst.1, 4000, &error);
+    if e > worst.0 {
+        worst = (e, v);
+    }
+    worst
+}
+
+/// Fails unless the error found stays within the proven bound (and the
+/// constant), and the bound within 4 times what is found.
+fn atan2_within_the_bound(draws: usize) {
+    use rigtform::accuracy::ATAN2_MAX_ABS_ERROR;
+    let (found, at) = atan2_search(draws, 41);
+    println!("atan2 kernel, absolute: {found:.4e} at {at:?} (proven {ATAN2_PROVEN:e})");
+    assert!(found <= ATAN2_PROVEN && ATAN2_PROVEN <= f64::from(ATAN2_MAX_ABS_ERROR));
+    assert!(ATAN2_PROVEN <= 4.0 * found);
+}
+
+#[test]
+fn atan2_found_stays_within_the_proven_bound() {
+    atan2_within_the_bound(200_000);
+}
+
+#[test]
+#[ignore = "seconds in release: the search the laws' docs quote"]
+fn deep_atan2_search() {
+    atan2_within_the_bound(20_000_000);
+}
+
 /// `| |from_axis_angle(axis, angle)| - 1 |` at `[x, y, z, angle]` (0 where
 /// the result is not finite).
 fn axis_angle_deviation(v: [f32; 4]) -> f64 {
