@@ -23,7 +23,7 @@
    relative, and they are non-negative). Each component's last rounding
    c * s is relative too, so the result's length is within 2^-24 of
    |p| s (norm4_upper, norm4_lower, as in normalize_norm.v). *)
-(*! looser RENORMALIZED_CHAIN_NORM_ERROR renormalized_norm <= 1.95e-7 | |a.mul_renormalized(b)| - 1 | for a, b within 2^-20 of unit norm (squared) and components in [-1, 1]: one step, and so every chain started within it *)
+(*! bound RENORMALIZED_CHAIN_NORM_ERROR renormalized_norm <= 1.95e-7 | |a.mul_renormalized(b)| - 1 | for a, b with squared norms within 2^-20 of 1 and components in [-1, 1]: one step, and so every chain started within it *)
 Require Import Reals Psatz.
 Require Import Flocq.Core.Core.
 Require Import Gappa.Gappa_library.
