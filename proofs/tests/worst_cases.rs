@@ -22,8 +22,8 @@
 //! rotation carry through).
 
 use rigtform::accuracy::{
-    MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, RENORMALIZED_CHAIN_NORM_ERROR, ROTATE_MAX_REL_ERROR,
-    SAMPLER_VEC3_MAX_REL_ERROR, UNIT_NORM_ERROR,
+    MUL_MAX_ANGLE_ERROR, NORMALIZE_MAX_NORM_ERROR, RENORMALIZED_CHAIN_NORM_ERROR,
+    ROTATE_MAX_REL_ERROR, SAMPLER_VEC3_MAX_REL_ERROR, UNIT_NORM_ERROR,
 };
 use rigtform::{Cvec3, Quat, RigTForm};
 use rigtform_proofs::draw::Draws;
@@ -1764,14 +1764,20 @@ fn renormalized_within(climbs: usize) {
             off(&x[4..]),
         );
         assert!(found <= RENORMALIZED_NORM_PROVEN, "{found:e}");
-        assert!(found <= f64::from(RENORMALIZED_CHAIN_NORM_ERROR), "{found:e}");
+        assert!(
+            found <= f64::from(RENORMALIZED_CHAIN_NORM_ERROR),
+            "{found:e}"
+        );
     }
 }
 
 #[test]
 fn renormalized_found_stays_within_the_proven_bound() {
     // An exact case: the identity times itself.
-    assert_eq!(renormalized_deviation([1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0], true), 0.0);
+    assert_eq!(
+        renormalized_deviation([1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0], true),
+        0.0
+    );
     renormalized_within(100);
 }
 
