@@ -279,13 +279,13 @@ pub const UNIT_NORM_ERROR: f32 = backend::UNIT_NORM_ERROR;
 /// `tests/edge_cases.rs`); plain products of the same steps drifted by
 /// 1.7e-2 in that run.
 ///
-/// Known: proven: `proofs/coq/renormalized_norm.v` proves 1.95e-7 (Coq,
+/// Known: proven: `proofs/coq/renormalized_norm.v` proves 1.947e-7 (Coq,
 /// on the certificate of `proofs/gappa/renormalize.g` for the scale
 /// `(3 - n2) * 0.5` and on `mul_norm.v` for the product). A search
 /// (`deep_renormalized_search` in `proofs/tests/worst_cases.rs`) finds
 /// 1.6240e-7 on that domain (ratio 1.20) and 1.5701e-7 with `|a|` within
-/// 1.95e-7 of 1 and `|b|` within 2.391e-7, the invariant's (ratio 1.24).
-pub const RENORMALIZED_CHAIN_NORM_ERROR: f32 = 1.95e-7; // 1.6240e-7 searched, 1.95e-7 proven (a chain of 10^6 products: 1.192e-7)
+/// 1.947e-7 of 1 and `|b|` within 2.391e-7, the invariant's (ratio 1.24).
+pub const RENORMALIZED_CHAIN_NORM_ERROR: f32 = 1.95e-7; // 1.6240e-7 searched, 1.947e-7 proven (a chain of 10^6 products: 1.192e-7)
 /// How far from 1 the norm of a quaternion may be for
 /// [`Quat::is_normalized`](crate::Quat::is_normalized): the drift of about
 /// 300 chained products at [`UNIT_NORM_ERROR`] each (plain products without

@@ -5,11 +5,11 @@
 
    Proven (renormalized_norm): for a and b in mul.g's domain (|a|^2 and
    |b|^2 within 2^-20 of 1, every component in [-1, 1]), the result's
-   norm is within 1.95e-7 of 1, whatever the inputs' norms in that
-   domain. As an invariant: every a within 1.95e-7 of unit norm has |a|^2
+   norm is within 1.947e-7 of 1, whatever the inputs' norms in that
+   domain. As an invariant: every a within 1.947e-7 of unit norm has |a|^2
    within 2^-20 of 1, and so has every b within 2.391e-7 (every result
    of normalize, normalize_norm.v), so a chain of products started within
-   1.95e-7 of unit norm (the identity included) stays within it for every
+   1.947e-7 of unit norm (the identity included) stays within it for every
    length, as long as its quaternions keep their components in [-1, 1]
    (mul.g's domain; a component leaves it only as 1 + 2^-23 with the
    others near 0, which this law does not exclude).
@@ -23,7 +23,7 @@
    relative, and they are non-negative). Each component's last rounding
    c * s is relative too, so the result's length is within 2^-24 of
    |p| s (norm4_upper, norm4_lower, as in normalize_norm.v). *)
-(*! bound RENORMALIZED_CHAIN_NORM_ERROR renormalized_norm <= 1.95e-7 | |a.mul_renormalized(b)| - 1 | for a, b with squared norms within 2^-20 of 1 and components in [-1, 1]: one step, and so every chain started within it *)
+(*! bound RENORMALIZED_CHAIN_NORM_ERROR renormalized_norm <= 1.947e-7 | |a.mul_renormalized(b)| - 1 | for a, b with squared norms within 2^-20 of 1 and components in [-1, 1]: one step, and so every chain started within it *)
 Require Import Reals Psatz.
 Require Import Flocq.Core.Core.
 Require Import Gappa.Gappa_library.
@@ -115,7 +115,7 @@ Lemma renormalize_norm : forall PW PX PY PZ : R,
   let r1 := rnd (p1 * s) in
   let r2 := rnd (p2 * s) in
   let r3 := rnd (p3 * s) in
-  Rabs (sqrt (r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3) - 1) <= 1.95e-7.
+  Rabs (sqrt (r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3) - 1) <= 1.947e-7.
 Proof.
   intros PW PX PY PZ p0 p1 p2 p3 HP n2 s r0 r1 r2 r3.
   assert (Hs : -1.35e-7 <= sqrt (p0 * p0 + p1 * p1 + p2 * p2 + p3 * p3) * s - 1 <= 1.35e-7)
@@ -145,15 +145,15 @@ Proof.
   apply abs_join. split.
   - (* The lower side, through the squares. *)
     set (L := (1 - u) * X).
-    assert (HL : 1 - 1.95e-7 + 5e-11 <= L) by (unfold L, u; nra).
-    assert (Hsq : (1 - 1.95e-7 + 5e-11) * (1 - 1.95e-7 + 5e-11) <= L * L).
-    { assert (0 <= (L - (1 - 1.95e-7 + 5e-11)) * (L + (1 - 1.95e-7 + 5e-11)))
+    assert (HL : 1 - 1.947e-7 + 5e-11 <= L) by (unfold L, u; nra).
+    assert (Hsq : (1 - 1.947e-7 + 5e-11) * (1 - 1.947e-7 + 5e-11) <= L * L).
+    { assert (0 <= (L - (1 - 1.947e-7 + 5e-11)) * (L + (1 - 1.947e-7 + 5e-11)))
         by (apply Rmult_le_pos; lra).
       nra. }
     assert (4 * eta * X <= 8 * eta) by nra.
     assert (Lsq : L * L = (1 - u) * (1 - u) * (X * X)) by (unfold L; ring).
-    assert (Hc2 : (1 - 1.95e-7) * (1 - 1.95e-7) <= r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3) by lra.
-    assert (Hsr : sqrt ((1 - 1.95e-7) * (1 - 1.95e-7)) <= sqrt (r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3))
+    assert (Hc2 : (1 - 1.947e-7) * (1 - 1.947e-7) <= r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3) by lra.
+    assert (Hsr : sqrt ((1 - 1.947e-7) * (1 - 1.947e-7)) <= sqrt (r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3))
       by (apply sqrt_le_1_alt; exact Hc2).
     rewrite sqrt_square in Hsr by lra.
     lra.
@@ -181,7 +181,7 @@ Theorem renormalized_norm : forall AW AX AY AZ BW BX BY BZ : R,
   let r1 := rnd (p1 * s) in
   let r2 := rnd (p2 * s) in
   let r3 := rnd (p3 * s) in
-  Rabs (sqrt (r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3) - 1) <= 1.95e-7.
+  Rabs (sqrt (r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3) - 1) <= 1.947e-7.
 Proof.
   intros AW AX AY AZ BW BX BY BZ a0 a1 a2 a3 b0 b1 b2 b3 HA HB Ha0 Ha1 Ha2 Ha3 Hb0 Hb1 Hb2 Hb3
     p0 p1 p2 p3 n2 s r0 r1 r2 r3.

@@ -56,5 +56,8 @@ T -> P + (T - P) / P * P;
 Q * s - 1 -> Q * (s - (3 - P) * 0.5) - (Q - 1) * (Q - 1) * (Q + 2) * 0.5;
 s - (3 - P) * 0.5 -> (s - t * 0.5) + (t - (3 - n2)) * 0.5 - (n2 - P) * 0.5;
 n2 - P -> (n2 - (s2 + sz)) + (s2 - (s1 + sy)) + (s1 - (sw + sx)) + (T - P);
+# The side conditions' sum of squares (`#! side`, used only by the model of
+# the side conditions, which has no other hint) is P.
+#! side px * px + pw * pw + pz * pz + py * py -> P;
 # Split the partial sums between 1 - 2^-24 and 1, where their ulp changes.
 $ s1 in (0.999999970198), s2 in (0.999999970198), n2 in (0.999999970198);
