@@ -466,6 +466,41 @@ fn product_is(name: &'static str) {
     }
 }
 
+/// renormalize.g on the product as the code computes it: its `n2` is the
+/// product's `norm_squared`, and `mul_renormalized`'s result is each
+/// component of the product times the model's `s`, rounded once
+/// (`proofs/coq/renormalized_norm.v`'s last step).
+#[test]
+fn renormalized_product_is_renormalize_g() {
+    let Some(m) = model("renormalize", Code::F32) else {
+        return;
+    };
+    assert_eq!(m.inputs, ["pw", "px", "py", "pz"]);
+    for (i, mut d) in draws() {
+        let (a, b) = if i % 3 == 0 {
+            (d.unit_quat(), d.unit_quat())
+        } else {
+            (
+                quat(core::array::from_fn(|_| component(&mut d))),
+                quat(core::array::from_fn(|_| component(&mut d))),
+            )
+        };
+        let p = a * b;
+        let v = [p.w, p.x, p.y, p.z];
+        let out = m.run(&v.map(f64::from));
+        check(&m, &out, "n2", p.norm_squared(), &v);
+        let s = out["s"] as f32;
+        let r = a.mul_renormalized(b);
+        for (c, rc) in [(p.w, r.w), (p.x, r.x), (p.y, r.y), (p.z, r.z)] {
+            assert!(
+                same(f64::from(c * s), rc),
+                "renormalize: {c:e} * {s:e} is {:e}, the code gives {rc:e}, for a = {a:?}, b = {b:?}",
+                c * s
+            );
+        }
+    }
+}
+
 /// normalize.g on the components as scale_for_squares leaves them: as they
 /// are when their sum of squares (the model's `s`) lies in [2^-100,
 /// f32::MAX], otherwise scaled as normalize_scale.g (by 2^-66 when it
