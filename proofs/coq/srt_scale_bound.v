@@ -12,7 +12,9 @@
    other columns are the first renamed, the padding's square and the
    division by the scale 1 are exact (the sum of squares lies in
    [2^-100, f32::MAX] for |s| <= 1e3), and the sign of the determinant
-   multiplies the x scale by 1 or -1, exactly. Flocq's rounding has no
+   multiplies the x scale by 1 or -1, exactly (and has the sign of the x
+   scale where the y and z scales are positive, on paper in that header,
+   from matrix3_determinant_bound.v). Flocq's rounding has no
    overflow; the code's has none while the sum of squares stays below
    f32::MAX, |s| below 1.8e19.
 
@@ -302,7 +304,17 @@ Proof.
   apply abs_split in HRb.
   pose proof (n3_pos D0 O0 P0) as HR0.
   assert (HR : Rabs (n3 D0 O0 P0 - 1) <= 2.4001e-7).
-  { apply Rabs_le. split; nra. }
+  { set (r := n3 D0 O0 P0) in *. apply Rabs_le. split.
+    - destruct (Rle_or_lt (1 - 2.4001e-7) r) as [h|h]; [lra|].
+      assert (r * r <= r * (1 - 2.4001e-7)) by (apply Rmult_le_compat_l; lra).
+      assert (r * (1 - 2.4001e-7) <= (1 - 2.4001e-7) * (1 - 2.4001e-7))
+        by (apply Rmult_le_compat_r; lra).
+      lra.
+    - destruct (Rle_or_lt r (1 + 2.4001e-7)) as [h|h]; [lra|].
+      assert ((1 + 2.4001e-7) * (1 + 2.4001e-7) <= r * (1 + 2.4001e-7))
+        by (apply Rmult_le_compat_r; lra).
+      assert (r * (1 + 2.4001e-7) <= r * r) by (apply Rmult_le_compat_l; lra).
+      lra. }
   apply abs_split in HR.
   set (L := n3 d o p).
   assert (HL : Rabs (L - 1) <= 5.8242e-7).
