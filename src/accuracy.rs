@@ -559,10 +559,27 @@ pub const LOOK_AT_RH_MAX_TRANSLATION_ERROR: f32 = 1.1e-6; // 8.405e-7
 ///
 /// Known: measured: the largest error over the draws in its doc, rounded up.
 pub const SRT_ROTATION_MAX_ANGLE_ERROR: f32 = 9.0e-7; // 7.084e-7
-/// Error of the scale of the same, relative to each input scale.
+/// Error of the scale of the same, relative to each input scale, for `r`
+/// an f32 rounding of a unit quaternion (`|r|^2` within 1.2e-7 of 1). For
+/// any other `r` the scale also carries `r`'s distance from unit norm:
+/// the exact column of `from_quat(r)` has squared length `1 + 4 (y^2 +
+/// z^2) (|r|^2 - 1)`, so up to `2 ||r|^2 - 1|` more (for a result of
+/// [`Quat::normalize`](crate::Quat::normalize), `|r|^2` up to 4.8e-7 from 1).
 ///
-/// Known: measured: the largest error over the draws in its doc, rounded up.
-pub const SRT_SCALE_MAX_REL_ERROR: f32 = 9.5e-7; // 7.610e-7
+/// Known: proven: `proofs/coq/srt_scale_bound.v` proves 7.92e-7 (Coq, on
+/// the rounded terms of `proofs/gappa/srt_scale.g`, which computes the
+/// code's bits) for every f32 `r` with `|r|^2` within 1.2e-7 of 1 (every
+/// f32 rounding of a unit quaternion) and every f32 scale of magnitude at
+/// least 1e-3 (to 1e3, where the norm takes no rescaling): the computed
+/// column of `from_quat(r)` is within 3.4241e-7 of the exact column of
+/// `r`'s formula, whose length is within 2.4001e-7 of 1, and the products
+/// by the scale, the sum of squares and the root add 3.5 roundings. A
+/// search (`deep_srt_scale_search` in `proofs/tests/worst_cases.rs`)
+/// finds 5.0071e-7 on that domain: the bound is 1.58 times that.
+/// `trs_round_trips_within_its_bounds_and_agrees_with_glam` checks it on
+/// random draws, and results of `normalize` against it plus `2 ||r|^2 -
+/// 1|`.
+pub const SRT_SCALE_MAX_REL_ERROR: f32 = 9.5e-7; // 5.0071e-7 (search), 7.92e-7 proven
 /// Error of an entry of [`Matrix3::inverse`](crate::Matrix3::inverse),
 /// `|entry - M / D|` with `M` the entry's minor (a component of a cross
 /// product of two columns) and `D` the determinant, relative to

@@ -616,6 +616,57 @@ fn rotation_matrix_is_matrix_entry_g() {
     }
 }
 
+/// srt_scale.g's norms, the first column's `n` and, renamed, the second's
+/// `n` and the third's `nz`, are the magnitudes of the scale that
+/// `Matrix4::to_scale_rotation_translation` takes back from
+/// `Matrix4::from_scale_rotation_translation`.
+#[test]
+fn srt_scale_is_srt_scale_g() {
+    let Some(m) = model("srt_scale", Code::F32) else {
+        return;
+    };
+    assert_eq!(m.inputs, ["w", "x", "y", "z", "s"]);
+    law_terms_are_the_models("srt_scale_bound", &m);
+    for (i, mut d) in draws() {
+        let [w, x, y, z]: [f32; 4] = if i % 2 == 0 {
+            let q = d.unit_quat();
+            [q.w, q.x, q.y, q.z]
+        } else {
+            core::array::from_fn(|_| d.uniform(-1.0, 1.0))
+        };
+        let scale: [f32; 3] = core::array::from_fn(|_| {
+            let magnitude = 10f32.powf(d.uniform(-3.0, 3.0));
+            if d.below(2) == 0 {
+                magnitude
+            } else {
+                -magnitude
+            }
+        });
+        let [sx, sy, sz] = scale;
+        let (got, _, _) = rigtform::Matrix4::from_scale_rotation_translation(
+            Cvec3::new(sx, sy, sz),
+            quat([w, x, y, z]),
+            Cvec3::ZERO,
+        )
+        .to_scale_rotation_translation();
+        // (the code's scale, the model's output, its inputs w, x, y, z, s)
+        let columns = [
+            (got.x, "n", [w, x, y, z, sx]),
+            (got.y, "n", [-w, y, x, z, sy]),
+            (got.z, "nz", [w, z, x, y, sz]),
+        ];
+        for (code, name, v) in columns {
+            let out = m.run(&v.map(f64::from));
+            // The model is the branch of the norm without rescaling.
+            let sum = if name == "n" { out["q"] } else { out["qz"] };
+            if !(2f64.powi(-100)..=f64::from(f32::MAX)).contains(&sum) {
+                continue;
+            }
+            check(&m, &out, name, code.abs(), &v);
+        }
+    }
+}
+
 /// sampler_linear.g and sampler_cubic.g, component by component, against
 /// a Cvec3 `Sampler` of one segment at a time inside it. The segment's
 /// `td = t1 - t0` and `u = (t - t0) / td`, which the models take as

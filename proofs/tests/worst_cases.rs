@@ -1887,3 +1887,87 @@ fn renormalized_found_stays_within_the_proven_bound() {
 fn deep_renormalized_search() {
     renormalized_within(20_000);
 }
+
+/// The error of the scale that `to_scale_rotation_translation` takes back
+/// from `from_scale_rotation_translation((s, |s|, |s|), q, 0)`, relative
+/// to the input scale, the largest of the three columns, for `v = (w, x,
+/// y, z, s)`: 0 outside the domain `SRT_SCALE_MAX_REL_ERROR`'s proof
+/// covers (`|q|^2` within 1.2e-7 of 1, exactly; `|s|` in [1e-3, 1e3]).
+fn srt_scale_error(v: [f32; 5]) -> f64 {
+    let q = Quat::from_wxyz(v[0], v[1], v[2], v[3]);
+    let s = v[4];
+    let q2: f64 = q64(q).iter().map(|c| c * c).sum();
+    if (q2 - 1.0).abs() > 1.2e-7 || !(1e-3..=1e3).contains(&s.abs()) {
+        return 0.0;
+    }
+    let input = Cvec3::new(s, s.abs(), s.abs());
+    let (got, _, _) = rigtform::Matrix4::from_scale_rotation_translation(input, q, Cvec3::ZERO)
+        .to_scale_rotation_translation();
+    [(got.x, input.x), (got.y, input.y), (got.z, input.z)]
+        .iter()
+        .map(|&(g, i)| ((f64::from(g) - f64::from(i)) / f64::from(i)).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The largest scale error that `climbs` climbs find, from unit
+/// quaternions of the proof's domain (a third of them turned by nearly a
+/// half turn about an axis in the y-z plane, a third about one in the
+/// x-y plane, where a column of the rotation is nearly the negated axis
+/// and its diagonal entry rounds the most) and scales of magnitude 1e-3
+/// to 1e3 of either sign.
+fn srt_scale_search(climbs: usize, seed: u64) -> f64 {
+    let mut d = Draws::new(seed);
+    let mut found = 0f64;
+    for c in 0..climbs {
+        let start = loop {
+            let mut q = d.unit_quat();
+            let small = d.uniform(-0.05, 0.05);
+            match c % 3 {
+                1 => (q.w, q.x) = (q.w * small, q.x * small),
+                2 => (q.w, q.z) = (q.w * small, q.z * small),
+                _ => {}
+            }
+            let q = q.normalize();
+            let magnitude = 10f32.powf(d.uniform(-3.0, 3.0));
+            let s = if d.below(2) == 0 {
+                magnitude
+            } else {
+                -magnitude
+            };
+            let v = [q.w, q.x, q.y, q.z, s];
+            if srt_scale_error(v) > 0.0 {
+                break v;
+            }
+        };
+        let (x, _) = climb_wide(&mut d, start, 300, 16, &srt_scale_error);
+        let (_, e) = climb_wide(&mut d, x, 300, 2, &srt_scale_error);
+        found = found.max(e);
+    }
+    found
+}
+
+#[test]
+fn srt_scale_found_stays_within_its_constant() {
+    use rigtform::accuracy::SRT_SCALE_MAX_REL_ERROR;
+    // Outside the proof's domain the error function answers 0.
+    assert_eq!(srt_scale_error([1.0, 0.0, 0.0, 0.0, 1e-4]), 0.0);
+    assert_eq!(srt_scale_error([1.001, 0.0, 0.0, 0.0, 1.0]), 0.0);
+    within(
+        "to_scale_rotation_translation's scale, relative",
+        srt_scale_search(300, 29),
+        "SRT_SCALE_MAX_REL_ERROR",
+        SRT_SCALE_MAX_REL_ERROR,
+    );
+}
+
+#[test]
+#[ignore = "seconds in release: the search the constant's doc quotes"]
+fn deep_srt_scale_search() {
+    use rigtform::accuracy::SRT_SCALE_MAX_REL_ERROR;
+    within(
+        "to_scale_rotation_translation's scale, relative",
+        srt_scale_search(200_000, 31),
+        "SRT_SCALE_MAX_REL_ERROR",
+        SRT_SCALE_MAX_REL_ERROR,
+    );
+}
