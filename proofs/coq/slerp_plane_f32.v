@@ -143,18 +143,19 @@ Proof.
   lra.
 Qed.
 
-Theorem slerp_plane_exact_norm : forall a0 a1 a2 a3 b0 b1 b2 b3 phi n f : R,
+Theorem slerp_plane_exact_norm : forall a0 a1 a2 a3 b0 b1 b2 b3 theta n f : R,
   a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3 = 1 ->
   b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3 = 1 ->
-  a0 * b0 + a1 * b1 + a2 * b2 + a3 * b3 = cos phi ->
-  0 <= n -> 0 <= f -> 0 < n + f <= PI / 2 -> phi <> n + f ->
+  a0 * b0 + a1 * b1 + a2 * b2 + a3 * b3 = cos theta ->
+  0 <= n -> 0 <= f -> 0 < n + f <= PI / 2 -> theta <> n + f ->
   let C0 := sin n / sin (n + f) in
   let C1 := sin f / sin (n + f) in
   let r0 := C0 * a0 + C1 * b0 in let r1 := C0 * a1 + C1 * b1 in
   let r2 := C0 * a2 + C1 * b2 in let r3 := C0 * a3 + C1 * b3 in
-  Rabs (r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3 - 1) / Rabs (phi - (n + f)) <= 1.
+  Rabs (r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3 - 1) / Rabs (theta - (n + f)) <= 1.0.
 Proof.
-  intros a0 a1 a2 a3 b0 b1 b2 b3 phi n f QA QB D Hn Hf Hp Hne C0 C1 r0 r1 r2 r3.
+  intros a0 a1 a2 a3 b0 b1 b2 b3 theta n f QA QB D Hn Hf Hp Hne C0 C1 r0 r1 r2 r3.
+  replace 1.0 with 1 by lra.
   pose proof PI_RGT_0 as Hpi.
   set (p := n + f) in *.
   assert (Ep : p = n + f) by reflexivity.
@@ -178,7 +179,7 @@ Proof.
           + 2 * (C0 * sin p) * (C1 * sin p) * cos p - sin p * sin p) by ring.
       rewrite E0, E1, <- I. ring. }
     apply Rmult_integral in Z. destruct Z as [Z|Z]; nra. }
-  assert (Diff : r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3 - 1 = 2 * C0 * C1 * (cos phi - cos p))
+  assert (Diff : r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3 - 1 = 2 * C0 * C1 * (cos theta - cos p))
     by (rewrite N2; lra).
   (* 2 sin n sin f <= 1 - cos p <= sin^2 p: 2 C0 C1 <= 1. *)
   assert (K : 0 <= 2 * C0 * C1 <= 1).
@@ -192,11 +193,11 @@ Proof.
     - apply Rmult_le_pos; [nra|]. left. apply Rinv_0_lt_compat. nra.
     - apply (Rmult_le_reg_r (sin p * sin p)); [nra|]. unfold Rdiv.
       rewrite Rmult_assoc, Rinv_l by nra. lra. }
-  assert (Hd : 0 < Rabs (phi - p)) by (apply Rabs_pos_lt; lra).
-  apply (Rmult_le_reg_r (Rabs (phi - p))); [exact Hd|].
+  assert (Hd : 0 < Rabs (theta - p)) by (apply Rabs_pos_lt; lra).
+  apply (Rmult_le_reg_r (Rabs (theta - p))); [exact Hd|].
   unfold Rdiv. rewrite Rmult_assoc, Rinv_l, Rmult_1_r, Rmult_1_l by lra.
   rewrite Diff, Rabs_mult, (Rabs_right (2 * C0 * C1)) by lra.
-  pose proof (cos_lipschitz phi p). pose proof (Rabs_pos (cos phi - cos p)).
-  assert (2 * C0 * C1 * Rabs (cos phi - cos p) <= 1 * Rabs (phi - p)) by (apply Rmult_le_compat; lra).
+  pose proof (cos_lipschitz theta p). pose proof (Rabs_pos (cos theta - cos p)).
+  assert (2 * C0 * C1 * Rabs (cos theta - cos p) <= 1 * Rabs (theta - p)) by (apply Rmult_le_compat; lra).
   lra.
 Qed.
