@@ -267,7 +267,7 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// to `|b|` (a search: 1.0744e-7); the rest of `slerp` has no proof. For
 /// its main branch in the plane (`alpha` in (0, 1), angles above 2^-12),
 /// `proofs/coq/slerp_plane_f32.v` proves two pieces: the computed shares
-/// of the angle add up to it within 5.961e-8, relative (exactly where
+/// of the angle add up to it within 5.961e-8, relative (exactly wherever
 /// `far >= phi / 2`), and the exact combination at the angle they make has
 /// a squared norm off 1 by at most that angle's error; the law joining
 /// them to the kernels' errors is not proven. A

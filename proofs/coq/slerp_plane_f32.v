@@ -8,9 +8,10 @@
    near = rnd(phi - far), for f32 alpha in [0, 1] and phi >= 2^-12, lie in
    [0, phi] (rounding is monotone and phi is an f32); where far >= phi / 2
    (alpha about 1/2 and above), phi - far is an f32 (Sterbenz's lemma,
-   Flocq's sterbenz), so near + far = phi exactly; elsewhere near + far
-   misses phi by the rounding of phi - far alone, at most 2^-24 (phi -
-   far) <= 2^-24 phi (and 2^-150 below the normal range, which
+   Flocq's sterbenz), so near + far = phi exactly; elsewhere (far <
+   phi / 2) near + far differs from phi by the rounding of phi - far
+   alone, which is not 0 where far has bits below the ulp of phi - far, at
+   most 2^-24 (phi - far) <= 2^-24 phi (and 2^-150 below the normal range, which
    phi >= 2^-12 makes at most 4e-42 relative): | near + far - phi | / phi
    <= 5.961e-8 in every case.
 
