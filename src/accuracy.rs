@@ -76,7 +76,7 @@ mod backend {
     pub const ATAN2_MAX_ABS_ERROR: f32 = 3.2e-7; // 2.667e-7 (every f32 quotient, near pi; the kernel is within 1.6 ulp); 3.16e-7 proven
     pub const SIN_COS_MAX_ABS_ERROR: f32 = 6.4e-8; // 5.760e-8 at 2.359356 (every f32 of [-10, 10])
     pub const TAN_MAX_REL_ERROR: f32 = 1.2e-7; // 7.745e-8 at 0.12439033 (every f32 of [0.0087, 1.5621])
-    pub const UNIT_NORM_ERROR: f32 = 3.5e-7; // 2.572e-7 (slerp, random pairs); 1.9720e-7 (a product, relative to |a| |b|, by search; 2.84e-7 proven); 2.4337e-7 (from_axis_angle, by search; 3.483e-7 proven)
+    pub const UNIT_NORM_ERROR: f32 = 3.5e-7; // 2.572e-7 (slerp, random pairs); 2.6220e-7 (slerp's f32 path in the plane, by search); 1.9720e-7 (a product, relative to |a| |b|, by search; 2.84e-7 proven); 2.4337e-7 (from_axis_angle, by search; 3.483e-7 proven)
     pub const POW_MAX_ANGLE_ERROR: f32 = 3.4e-7; // 2.580e-7 (pow), 2.725e-7 (to_axis_angle), 2.968e-7 (pow, search); 1.03e-6 proven given swept kernels
     pub const SLERP_MAX_ANGLE_ERROR: f32 = 5.2e-7; // 4.106e-7 (random pairs, alpha in [-1, 2])
     pub const FROM_SCALED_AXIS_MAX_REL_ERROR: f32 = 3.0e-7; // 2.426e-7
@@ -264,10 +264,17 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// sine lies in [2^-13, 1] follows, by a calculation in its header, from
 /// the polynomials' relative errors `sin_poly_tail.g` and `cos_poly_tail.g`
 /// prove), 1.193e-7 relative
-/// to `|b|` (a search: 1.0744e-7); the rest of `slerp` has no proof. A
+/// to `|b|` (a search: 1.0744e-7); the rest of `slerp` has no proof. For
+/// its main branch in the plane (`alpha` in (0, 1), angles above 2^-12),
+/// `proofs/coq/slerp_plane_f32.v` proves two pieces: the computed shares
+/// of the angle add up to it within 5.961e-8, relative (exactly wherever
+/// `far >= phi / 2`), and the exact combination at the angle they make has
+/// a squared norm off 1 by at most that angle's error; the law joining
+/// them to the kernels' errors is not proven. A
 /// search of the f32 evaluation (`deep_slerp_f32_search`) finds 2.5020e-7
 /// (`alpha` in [0, 1]) and 2.9384e-7 (extrapolating) against the range of
-/// the inputs' norms. For `slerp`'s f64 path
+/// the inputs' norms, and one of that branch alone
+/// (`deep_slerp_f32_plane_search`) 2.6220e-7. For `slerp`'s f64 path
 /// (x86-64 and AArch64, `alpha` in (0, 1]), `proofs/coq/slerp_norm_f64.v`
 /// proves 2.2e-7 relative to the mean of the inputs' norms that the exact
 /// coefficients weigh (Coq; the angle from `proofs/gappa/slerp_angle_f64.g`,

@@ -1647,6 +1647,110 @@ fn deep_slerp_f32_search() {
     slerp_f32_within_the_constant(100_000, 300, 600);
 }
 
+/// [`slerp_f32_deviations`] on the main branch of slerp's f32 path in the
+/// plane (`proofs/coq/slerp_plane_f32.v`'s domain): `alpha` in (0, 1), the
+/// inputs more than 2^-11 rad apart (`phi > 2^-12` with a margin) and the
+/// endpoint factor not applied (`|n2 - on2| <= 1e-6 on2` as the code
+/// computes it); 0 elsewhere.
+fn slerp_f32_plane_deviations(v: [f32; 9]) -> [f64; 2] {
+    let alpha = v[8];
+    if !(alpha > 0.0 && alpha < 1.0) {
+        return [0.0; 2];
+    }
+    let a = Quat::from_wxyz(v[0], v[1], v[2], v[3]).normalize();
+    let b = Quat::from_wxyz(v[4], v[5], v[6], v[7]).normalize();
+    if !(a.is_finite() && b.is_finite()) {
+        return [0.0; 2];
+    }
+    let (n2, on2) = (a.norm_squared(), b.norm_squared());
+    if (n2 - on2).abs() > 1e-6 * on2 {
+        return [0.0; 2];
+    }
+    let (pa, pb) = (q64(a), q64(b));
+    let cos = pa.iter().zip(&pb).map(|(x, y)| x * y).sum::<f64>() / (norm64(a) * norm64(b));
+    if cos.abs().min(1.0).acos() <= 1.0 / 2048.0 {
+        return [0.0; 2];
+    }
+    slerp_f32_deviations(v, (0.0, 1.0))
+}
+
+/// The largest errors of [`slerp_f32_plane_deviations`] that `climbs`
+/// climbs find, from random pairs, pairs 2^-10 to 2^-4 apart, pairs near
+/// a right angle and pairs of the results of `normalize` farthest from
+/// unit norm, with `alpha` near 1/2, random or near 1.
+fn slerp_f32_plane_search(climbs: usize, steps: usize, seed: u64) -> [f64; 2] {
+    let (pool, _) = normalized_pool(climbs.max(200), seed);
+    let mut d = Draws::new(seed ^ 0x91a4e);
+    let mut found = [0f64; 2];
+    let flat = |a: Quat, b: Quat, alpha: f32| [a.w, a.x, a.y, a.z, b.w, b.x, b.y, b.z, alpha];
+    for c in 0..climbs {
+        let a = if c % 4 == 3 {
+            pool[d.below(pool.len())]
+        } else {
+            d.unit_quat()
+        };
+        let b = match c % 4 {
+            0 => d.unit_quat(),
+            1 => {
+                let s = 2f32.powi(-(d.below(7) as i32) - 4);
+                Quat::from_wxyz(
+                    a.w + s * d.uniform(-1.0, 1.0),
+                    a.x + s * d.uniform(-1.0, 1.0),
+                    a.y + s * d.uniform(-1.0, 1.0),
+                    a.z + s * d.uniform(-1.0, 1.0),
+                )
+            }
+            2 => {
+                let b = d.unit_quat();
+                let ab = a.dot(b);
+                Quat::from_wxyz(
+                    b.w - ab * a.w,
+                    b.x - ab * a.x,
+                    b.y - ab * a.y,
+                    b.z - ab * a.z,
+                )
+            }
+            _ => pool[d.below(pool.len())],
+        };
+        let alpha = match d.below(3) {
+            0 => d.uniform(0.45, 0.55),
+            1 => d.uniform(0.0, 1.0),
+            _ => d.uniform(0.9, 1.0),
+        };
+        for (k, f) in found.iter_mut().enumerate() {
+            let (_, e) = climb(&mut d, flat(a, b, alpha), steps, &|x| {
+                slerp_f32_plane_deviations(x)[k]
+            });
+            *f = f.max(e);
+        }
+    }
+    found
+}
+
+/// The search of the plane's main branch, against the constant.
+fn slerp_f32_plane_within_the_constant(climbs: usize, steps: usize) {
+    let [nearest, mean] = slerp_f32_plane_search(climbs, steps, 37);
+    println!("| |slerp(a, b, alpha)| / n - 1 |, n the nearest norm between |a| and |b|, f32 path in the plane, alpha in (0, 1), phi > 2^-11, no endpoint factor: {nearest:.4e} ({climbs} climbs)");
+    println!("| |slerp(a, b, alpha)| / m - 1 |, m the weighted mean of |a| and |b|, same domain: {mean:.4e}");
+    within(
+        "slerp's f32 path in the plane",
+        nearest,
+        "UNIT_NORM_ERROR",
+        UNIT_NORM_ERROR,
+    );
+}
+
+#[test]
+fn slerp_f32_plane_found_stays_within_the_constant() {
+    slerp_f32_plane_within_the_constant(200, 300);
+}
+
+#[test]
+#[ignore = "a minute in release: the search of the plane's main branch"]
+fn deep_slerp_f32_plane_search() {
+    slerp_f32_plane_within_the_constant(100_000, 600);
+}
+
 /// slerp's norm on its f64 path (x86-64 and AArch64: `alpha` in (0, 1],
 /// inputs more than 2^-12 rad apart and not at a right angle), for `a`
 /// and `b` the results of `normalize` on the first and the next four
