@@ -27,7 +27,6 @@ Require Import Reals Psatz.
 Require Import Flocq.Core.Core.
 Require Import Gappa.Gappa_library.
 Require Import Laws.Common.
-Require Laws.mul.
 
 Open Scope R_scope.
 
@@ -235,6 +234,37 @@ Proof.
   lra.
 Qed.
 
+(* (x + y + z + t)^2 <= 4 (x^2 + y^2 + z^2 + t^2). *)
+Lemma sq4 : forall x y z t, (x + y + z + t) * (x + y + z + t) <= 4 * (x * x + y * y + z * z + t * t).
+Proof.
+  intros. pose proof (Rle_0_sqr (x - y)); pose proof (Rle_0_sqr (x - z)); pose proof (Rle_0_sqr (x - t));
+  pose proof (Rle_0_sqr (y - z)); pose proof (Rle_0_sqr (y - t)); pose proof (Rle_0_sqr (z - t)).
+  unfold Rsqr in *. nra.
+Qed.
+
+(* The error's squared length from the components' bounds. *)
+Lemma err_sq : forall e0 e1 e2 e3 M0 M1 M2 M3 w e,
+  0 <= w <= 5.9605e-8 -> 0 <= e <= / 2 ^ 140 ->
+  Rabs e0 <= w * M0 + 8 * e -> Rabs e1 <= w * M1 + 8 * e ->
+  Rabs e2 <= w * M2 + 8 * e -> Rabs e3 <= w * M3 + 8 * e ->
+  M0 * M0 + M1 * M1 + M2 * M2 + M3 * M3 <= 28.0001 ->
+  e0 * e0 + e1 * e1 + e2 * e2 + e3 * e3 <= 5.2e-13.
+Proof.
+  intros e0 e1 e2 e3 M0 M1 M2 M3 w e Hw He H0 H1 H2 H3 HM.
+  assert (Sq : forall x M, Rabs x <= w * M + 8 * e -> x * x <= 2 * (w * w) * (M * M) + 128 * (e * e)).
+  { intros x M H. pose proof (Rabs_pos x). rewrite <- sq_abs.
+    assert (Rabs x * Rabs x <= (w * M + 8 * e) * (w * M + 8 * e)) by (apply Rmult_le_compat; lra).
+    pose proof (Rle_0_sqr (w * M - 8 * e)). unfold Rsqr in *. nra. }
+  pose proof (Sq _ _ H0); pose proof (Sq _ _ H1); pose proof (Sq _ _ H2); pose proof (Sq _ _ H3).
+  assert (Hww : w * w <= 5.9605e-8 * 5.9605e-8) by (apply Rmult_le_compat; lra).
+  assert (Hee : e * e <= / 2 ^ 140) by (assert (/ 2 ^ 140 <= 1) by (simpl; lra); nra).
+  assert (HM0 : 0 <= M0 * M0 + M1 * M1 + M2 * M2 + M3 * M3) by nra.
+  assert (2 * (w * w) * (M0 * M0 + M1 * M1 + M2 * M2 + M3 * M3) <= 2 * (5.9605e-8 * 5.9605e-8) * 28.0001)
+    by (apply Rmult_le_compat; nra).
+  assert (/ 2 ^ 140 <= 1e-40) by (simpl; lra).
+  nra.
+Qed.
+
 (* The last step: from the projection of the error on the product (dot)
    and the error's squared length (Ee) to the norm's relative error. *)
 Lemma mul_final : forall N Sp dot Ee w e0,
@@ -283,8 +313,6 @@ Theorem mul_norm : forall AW AX AY AZ BW BX BY BZ : R,
   let b0 := rnd BW in let b1 := rnd BX in let b2 := rnd BY in let b3 := rnd BZ in
   1 - / 1048576 <= a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3 <= 1 + / 1048576 ->
   1 - / 1048576 <= b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3 <= 1 + / 1048576 ->
-  Rabs a0 <= 1 -> Rabs a1 <= 1 -> Rabs a2 <= 1 -> Rabs a3 <= 1 ->
-  Rabs b0 <= 1 -> Rabs b1 <= 1 -> Rabs b2 <= 1 -> Rabs b3 <= 1 ->
   let p0 := rnd (rnd (rnd (rnd (a0 * b0) - rnd (a1 * b1)) - rnd (a2 * b2)) - rnd (a3 * b3)) in
   let p1 := rnd (rnd (rnd (rnd (a0 * b1) + rnd (a1 * b0)) + rnd (a2 * b3)) - rnd (a3 * b2)) in
   let p2 := rnd (rnd (rnd (rnd (a0 * b2) - rnd (a1 * b3)) + rnd (a2 * b0)) + rnd (a3 * b1)) in
@@ -293,7 +321,7 @@ Theorem mul_norm : forall AW AX AY AZ BW BX BY BZ : R,
         / (sqrt (a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3) * sqrt (b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3))
         - 1) <= 2.84e-7.
 Proof.
-  intros AW AX AY AZ BW BX BY BZ a0 a1 a2 a3 b0 b1 b2 b3 HA HB Ha0 Ha1 Ha2 Ha3 Hb0 Hb1 Hb2 Hb3 p0 p1 p2 p3.
+  intros AW AX AY AZ BW BX BY BZ a0 a1 a2 a3 b0 b1 b2 b3 HA HB p0 p1 p2 p3.
   pose proof u_pos as Hu; pose proof eta_pos as He.
   assert (Hu1 : u = / 16777216) by reflexivity.
   assert (He1 : eta <= / 2 ^ 140) by (unfold eta; simpl; lra).
@@ -302,28 +330,6 @@ Proof.
   set (P1 := a0 * b1 + a1 * b0 + a2 * b3 - a3 * b2).
   set (P2 := a0 * b2 - a1 * b3 + a2 * b0 + a3 * b1).
   set (P3 := a0 * b3 + a1 * b2 - a2 * b1 + a3 * b0).
-  (* The certificate of mul.g: the error vector within 7.16e-7. *)
-  assert (Hcert : sqrt ((p0 - P0) * (p0 - P0) + (p1 - P1) * (p1 - P1) + (p2 - P2) * (p2 - P2) + (p3 - P3) * (p3 - P3)) <= 7.16e-7).
-  { apply Classical_Prop.NNPP; intro Hn.
-    refine (Laws.mul.l1 AW BW AX BX _ AY BY _ BZ _ _ _ _ _ AZ _ _ _ _ _ _ _ _ _ _);
-      try ring.
-    unfold Laws.mul.s1. split.
-    2: { right. intro Hg. apply Hn. destruct Hg as [_ Hg]. eapply Rle_trans; [exact Hg|].
-         unfold Laws.mul.i4, Laws.mul.f7. gappa_nums. lra. }
-    unfold Laws.mul.s2, Laws.mul.s3, Laws.mul.s4, Laws.mul.s5, Laws.mul.s6,
-      Laws.mul.s7, Laws.mul.s8, Laws.mul.s9, Laws.mul.s10.
-    pose proof (Rabs_pos a0); pose proof (Rabs_pos a1); pose proof (Rabs_pos a2); pose proof (Rabs_pos a3);
-    pose proof (Rabs_pos b0); pose proof (Rabs_pos b1); pose proof (Rabs_pos b2); pose proof (Rabs_pos b3).
-    clear Hn. unfold a0, a1, a2, a3, b0, b1, b2, b3 in *. gappa_nums.
-    repeat split; lra. }
-  set (e := sqrt ((p0 - P0) * (p0 - P0) + (p1 - P1) * (p1 - P1) + (p2 - P2) * (p2 - P2) + (p3 - P3) * (p3 - P3))) in Hcert.
-  assert (He2 : (p0 - P0) * (p0 - P0) + (p1 - P1) * (p1 - P1) + (p2 - P2) * (p2 - P2) + (p3 - P3) * (p3 - P3) <= 5.2e-13).
-  { assert (Ee : e * e = (p0 - P0) * (p0 - P0) + (p1 - P1) * (p1 - P1) + (p2 - P2) * (p2 - P2) + (p3 - P3) * (p3 - P3))
-      by (unfold e; apply sqrt_sqrt; pose proof (Rle_0_sqr (p0 - P0)); pose proof (Rle_0_sqr (p1 - P1));
-          pose proof (Rle_0_sqr (p2 - P2)); pose proof (Rle_0_sqr (p3 - P3)); unfold Rsqr in *; lra).
-    assert (0 <= e) by apply sqrt_pos.
-    assert (e * e <= 7.16e-7 * 7.16e-7) by (apply Rmult_le_compat; lra). lra. }
-  clearbody e. clear Hcert.
   (* Each component: four rounded terms summed left to right. *)
   assert (E0 : p0 = rnd (rnd (rnd (rnd (a0 * b0) + rnd (- (a1 * b1))) + rnd (- (a2 * b2))) + rnd (- (a3 * b3))))
     by (unfold p0; rewrite !rnd_opp; reflexivity).
@@ -451,6 +457,42 @@ Proof.
       (1 - / 1048576) * (1 - / 1048576) <= x * y <= (1 + / 1048576) * (1 + / 1048576)).
     { intros x y Hx Hy. split; apply Rmult_le_compat; lra. }
     apply Pr; assumption. }
+  (* The error's squared length, second order: each component's error is
+     at most uu M_i + 8 eta, and the M_i are at most 7 |a| |b| in squares
+     (sq4, HT with |a_0| + ... + |a_3| <= 2 |a|, and the partial sums and
+     P themselves products). *)
+  assert (He2 : (p0 - P0) * (p0 - P0) + (p1 - P1) * (p1 - P1) + (p2 - P2) * (p2 - P2) + (p3 - P3) * (p3 - P3) <= 5.2e-13).
+  { assert (HA2 : (A0 + A1 + A2 + A3) * (A0 + A1 + A2 + A3) <= 4 * (na * na)).
+    { rewrite Hna. rewrite <- (sq_abs a0), <- (sq_abs a1), <- (sq_abs a2), <- (sq_abs a3).
+      fold A0 A1 A2 A3. apply sq4. }
+    assert (HTs : T0 * T0 + T1 * T1 + T2 * T2 + T3 * T3 <= 4 * (N * N)).
+    { rewrite <- n4_sq. pose proof (n4_pos T0 T1 T2 T3).
+      assert (n4 T0 T1 T2 T3 * n4 T0 T1 T2 T3 <= ((A0 + A1 + A2 + A3) * nb) * ((A0 + A1 + A2 + A3) * nb))
+        by (apply Rmult_le_compat; lra).
+      assert (((A0 + A1 + A2 + A3) * nb) * ((A0 + A1 + A2 + A3) * nb) <= 4 * (na * na) * (nb * nb))
+        by (replace (((A0 + A1 + A2 + A3) * nb) * ((A0 + A1 + A2 + A3) * nb))
+              with ((A0 + A1 + A2 + A3) * (A0 + A1 + A2 + A3) * (nb * nb)) by ring;
+            apply Rmult_le_compat_r; nra).
+      rewrite HN. lra. }
+    assert (HS1s : Rabs s10 * Rabs s10 + Rabs s11 * Rabs s11 + Rabs s12 * Rabs s12 + Rabs s13 * Rabs s13 <= N * N).
+    { rewrite !sq_abs. rewrite HN.
+      replace (s10 * s10 + s11 * s11 + s12 * s12 + s13 * s13) with ((a0 * a0 + a1 * a1) * (nb * nb))
+        by (rewrite Hnb; unfold s10, s11, s12, s13; ring).
+      replace (na * nb * (na * nb)) with ((na * na) * (nb * nb)) by ring.
+      apply Rmult_le_compat_r; nra. }
+    assert (HS2s : Rabs s20 * Rabs s20 + Rabs s21 * Rabs s21 + Rabs s22 * Rabs s22 + Rabs s23 * Rabs s23 <= N * N).
+    { rewrite !sq_abs. rewrite HN.
+      replace (s20 * s20 + s21 * s21 + s22 * s22 + s23 * s23) with ((a0 * a0 + a1 * a1 + a2 * a2) * (nb * nb))
+        by (rewrite Hnb; unfold s20, s21, s22, s23; ring).
+      replace (na * nb * (na * nb)) with ((na * na) * (nb * nb)) by ring.
+      apply Rmult_le_compat_r; nra. }
+    assert (HPs : Rabs P0 * Rabs P0 + Rabs P1 * Rabs P1 + Rabs P2 * Rabs P2 + Rabs P3 * Rabs P3 = N * N)
+      by (rewrite !sq_abs; symmetry; apply n4_sq).
+    pose proof (sq4 T0 (Rabs s10) (Rabs s20) (Rabs P0)); pose proof (sq4 T1 (Rabs s11) (Rabs s21) (Rabs P1));
+    pose proof (sq4 T2 (Rabs s12) (Rabs s22) (Rabs P2)); pose proof (sq4 T3 (Rabs s13) (Rabs s23) (Rabs P3)).
+    assert (HM : M0 * M0 + M1 * M1 + M2 * M2 + M3 * M3 <= 28.0001).
+    { unfold M0, M1, M2, M3. lra. }
+    apply (err_sq _ _ _ _ M0 M1 M2 M3 uu eta Huu); [split; lra|assumption..]. }
   replace (sqrt (a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3) * sqrt (b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3)) with N
     by (rewrite HN; reflexivity).
   assert (He0 : 0 <= (p0 - P0) * (p0 - P0) + (p1 - P1) * (p1 - P1) + (p2 - P2) * (p2 - P2) + (p3 - P3) * (p3 - P3))

@@ -169,8 +169,6 @@ Theorem renormalized_norm : forall AW AX AY AZ BW BX BY BZ : R,
   let b0 := rnd BW in let b1 := rnd BX in let b2 := rnd BY in let b3 := rnd BZ in
   1 - / 1048576 <= a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3 <= 1 + / 1048576 ->
   1 - / 1048576 <= b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3 <= 1 + / 1048576 ->
-  Rabs a0 <= 1 -> Rabs a1 <= 1 -> Rabs a2 <= 1 -> Rabs a3 <= 1 ->
-  Rabs b0 <= 1 -> Rabs b1 <= 1 -> Rabs b2 <= 1 -> Rabs b3 <= 1 ->
   let p0 := rnd (rnd (rnd (rnd (a0 * b0) - rnd (a1 * b1)) - rnd (a2 * b2)) - rnd (a3 * b3)) in
   let p1 := rnd (rnd (rnd (rnd (a0 * b1) + rnd (a1 * b0)) + rnd (a2 * b3)) - rnd (a3 * b2)) in
   let p2 := rnd (rnd (rnd (rnd (a0 * b2) - rnd (a1 * b3)) + rnd (a2 * b0)) + rnd (a3 * b1)) in
@@ -183,9 +181,9 @@ Theorem renormalized_norm : forall AW AX AY AZ BW BX BY BZ : R,
   let r3 := rnd (p3 * s) in
   Rabs (sqrt (r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3) - 1) <= 1.947e-7.
 Proof.
-  intros AW AX AY AZ BW BX BY BZ a0 a1 a2 a3 b0 b1 b2 b3 HA HB Ha0 Ha1 Ha2 Ha3 Hb0 Hb1 Hb2 Hb3
+  intros AW AX AY AZ BW BX BY BZ a0 a1 a2 a3 b0 b1 b2 b3 HA HB
     p0 p1 p2 p3 n2 s r0 r1 r2 r3.
-  pose proof (Laws.mul_norm.mul_norm AW AX AY AZ BW BX BY BZ HA HB Ha0 Ha1 Ha2 Ha3 Hb0 Hb1 Hb2 Hb3) as M.
+  pose proof (Laws.mul_norm.mul_norm AW AX AY AZ BW BX BY BZ HA HB) as M.
   fold a0 a1 a2 a3 b0 b1 b2 b3 p0 p1 p2 p3 in M.
   (* |p|^2 within 2^-18 of 1: |p| = m |a| |b|, m within 2.84e-7 of 1. *)
   set (A := a0 * a0 + a1 * a1 + a2 * a2 + a3 * a3) in *.
