@@ -1,16 +1,15 @@
 (* The norm of a product a * b (src/quat/scalar.rs: hamilton, and
    src/quat/sse2.rs, the same terms in the same order): every component a
    sum of four rounded products, rounded left to right, for a and b with
-   |a|^2 and |b|^2 within 2^-20 of 1 and components in [-1, 1] (mul.g's
-   domain, every result of normalize): | |a b| / (|a| |b|) - 1 | at most
+   |a|^2 and |b|^2 within 2^-20 of 1 (every result of normalize, and
+   every quaternion within 1.947e-7 of unit norm, whatever its
+   components: one may be 1 + 2^-23): | |a b| / (|a| |b|) - 1 | at most
    2.84e-7.
 
-   Certificate: mul.g (Gappa), the error vector p - P within 7.16e-7 long
-   (P the exact product), which bounds the error's length, not its
-   projection on the product. Proven here: each component's error is at
+   Proven here, with no certificate: each component's error is at
    most 2^-24 times M_i, the sum of the magnitudes of its four terms, its
    two partial sums and itself (sum4_err, to first order), and the norm
-   moves by the projection P . (p - P) / |P|, at most
+   moves by the projection P . (p - P) / |P| (P the exact product), at most
    2^-24 sum_i |P_i| M_i / |P|. By Cauchy-Schwarz four times that is at
    most 2^-24 (|T| + |S1| + |S2| + |P|), with T the terms' magnitudes per
    component (at most (|a_0| + ... + |a_3|) |b| long: a convolution
@@ -21,7 +20,11 @@
    Their sum over |a| |b| is at most 4.749 (chain: Cauchy-Schwarz three
    times; the largest is 1 + sqrt(1 + (1 + sqrt(4 + 2 sqrt 2))^2) =
    4.74896, at a = (0.629, 0.630, 0.369, 0.267) in magnitude). The
-   certificate's error length bounds the second-order term |p - P|^2. *)
+   second-order term |p - P|^2 is at most 2 uu^2 sum_i M_i^2 + 512 eta^2
+   (err_sq), with sum_i M_i^2 <= 4 (|T|^2 + |S1|^2 + |S2|^2 + |P|^2)
+   <= 28 |a|^2 |b|^2 (sq4, and |a_0| + ... + |a_3| <= 2 |a|): below
+   2.0e-13. No step bounds a component, so the law needs none in
+   [-1, 1] (mul.g's domain, which its own goals keep). *)
 (*! looser UNIT_NORM_ERROR mul_norm <= 2.84e-7 | |a*b| / (|a| |b|) - 1 |, the product's own part of the constant, for a, b within 2^-20 of unit norm *)
 Require Import Reals Psatz.
 Require Import Flocq.Core.Core.

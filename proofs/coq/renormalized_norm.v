@@ -1,18 +1,16 @@
-(* The norm of a.mul_renormalized(b) (src/quat.rs): p = a * b (mul.g's
+(* The norm of a.mul_renormalized(b) (src/quat.rs): p = a * b (the Hamilton
    product, src/quat/scalar.rs and sse2.rs), n2 = p.norm_squared()
    (Quat::dot: w w + x x + y y + z z, left to right), s = (3 - n2) * 0.5,
    and each component of p times s, every operation rounded to f32.
 
-   Proven (renormalized_norm): for a and b in mul.g's domain (|a|^2 and
-   |b|^2 within 2^-20 of 1, every component in [-1, 1]), the result's
-   norm is within 1.947e-7 of 1, whatever the inputs' norms in that
-   domain. As an invariant: every a within 1.947e-7 of unit norm has |a|^2
-   within 2^-20 of 1, and so has every b within 2.391e-7 (every result
-   of normalize, normalize_norm.v), so a chain of products started within
-   1.947e-7 of unit norm (the identity included) stays within it for every
-   length, as long as its quaternions keep their components in [-1, 1]
-   (mul.g's domain; a component leaves it only as 1 + 2^-23 with the
-   others near 0, which this law does not exclude).
+   Proven (renormalized_norm): for a and b with |a|^2 and |b|^2 within
+   2^-20 of 1 (no hypothesis on their components), the result's norm is
+   within 1.947e-7 of 1, whatever the inputs' norms in that domain. As
+   an invariant: every a within 1.947e-7 of unit norm has |a|^2 within
+   2^-20 of 1 (even with a component 1 + 2^-23, the others near 0), and
+   so has every b within 2.391e-7 (every result of normalize,
+   normalize_norm.v), so a chain of products started within 1.947e-7 of
+   unit norm (the identity included) stays within it for every length.
 
    The steps: mul_norm.v puts |p| within 2.84e-7 of |a| |b|, relative,
    so |p|^2 lies within 2^-18 of 1. The certificate of renormalize.g
@@ -23,7 +21,7 @@
    relative, and they are non-negative). Each component's last rounding
    c * s is relative too, so the result's length is within 2^-24 of
    |p| s (norm4_upper, norm4_lower, as in normalize_norm.v). *)
-(*! bound RENORMALIZED_CHAIN_NORM_ERROR renormalized_norm <= 1.947e-7 | |a.mul_renormalized(b)| - 1 | for a, b with squared norms within 2^-20 of 1 and components in [-1, 1]: one step, and so every chain started within it *)
+(*! bound RENORMALIZED_CHAIN_NORM_ERROR renormalized_norm <= 1.947e-7 | |a.mul_renormalized(b)| - 1 | for a, b with squared norms within 2^-20 of 1: one step, and so every chain started within it *)
 Require Import Reals Psatz.
 Require Import Flocq.Core.Core.
 Require Import Gappa.Gappa_library.
@@ -162,7 +160,7 @@ Proof.
     unfold u in *. lra.
 Qed.
 
-(* The law: a and b in mul.g's domain, p = a * b as the code rounds it
+(* The law: a and b with squared norms within 2^-20 of 1, p = a * b as the code rounds it
    (mul_norm.v's statement), then the scale and the four c * s. *)
 Theorem renormalized_norm : forall AW AX AY AZ BW BX BY BZ : R,
   let a0 := rnd AW in let a1 := rnd AX in let a2 := rnd AY in let a3 := rnd AZ in

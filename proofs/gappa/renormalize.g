@@ -4,8 +4,8 @@
 # operation rounded as the code rounds it.
 #
 # Domain: the product's squared norm P = |p|^2 within 2^-18 of 1, which
-# holds for every product of two quaternions in mul.g's domain
-# (proofs/coq/renormalized_norm.v derives it from mul_norm.v), the
+# holds for every product of two quaternions with squared norms within 2^-20
+# of 1 (proofs/coq/renormalized_norm.v derives it from mul_norm.v), the
 # rounded squares in [0, 2].
 #
 # Proven: |p| s within 1.35e-7 of 1 (about 2.25 2^-24), given that the
