@@ -248,8 +248,8 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 /// (8.3e-7) of 1, and a search found 4.6884e-7 (`proofs/tests/worst_cases.rs`).
 ///
 /// Known: measured. For products, `proofs/coq/mul_norm.v` proves 2.84e-7
-/// (Coq, on the certificate of `proofs/gappa/mul.g`, relative to `|a| |b|`
-/// for inputs within 2^-20 of unit norm), and a search found 1.9720e-7
+/// (Coq, from the rounding of each term and partial sum, relative to `|a| |b|`
+/// for inputs within 2^-20 of unit norm, whatever their components), and a search found 1.9720e-7
 /// (`proofs/tests/worst_cases.rs`); for `from_axis_angle` and for `pow`
 /// with `|alpha| <= f32::MAX / 4` (beyond, `pow` ends with `normalize`),
 /// `proofs/coq/axis_angle_norm.v` proves 3.483e-7 (Coq, on the terms of
@@ -286,14 +286,14 @@ pub const NORMALIZE_MAX_NORM_ERROR: f32 = 2.4e-7; // 2.391e-7 proven; 1.723e-7 (
 pub const UNIT_NORM_ERROR: f32 = backend::UNIT_NORM_ERROR;
 /// `|norm - 1|` of [`Quat::mul_renormalized`](crate::Quat::mul_renormalized)'s
 /// result, one step and so every chain: for `a` and `b` with `|a|^2` and
-/// `|b|^2` within 2^-20 of 1 and every component in [-1, 1], the exact
+/// `|b|^2` within 2^-20 of 1 (whatever their components), the exact
 /// norm of the f32 result of `a.mul_renormalized(b)` is within this of 1,
 /// whatever the inputs' norms in that domain (the Newton step takes them
 /// away to second order; what is left is the step's own rounding). By
 /// induction, a chain started within this of unit norm (the identity
 /// included) whose steps are within 2.391e-7 of it (every result of
-/// `normalize`) stays within it for every length, as long as its
-/// quaternions keep their components in [-1, 1]. A chain of 1,000,000
+/// `normalize`) stays within it for every length (a component of
+/// 1 + 2^-23, which such a chain can reach, is inside the domain). A chain of 1,000,000
 /// products cycling through 1,000 random rotations of up to 0.1 rad
 /// reached 1.192e-7 (`renormalized_product_chain_stays_unit` in
 /// `tests/edge_cases.rs`); plain products of the same steps drifted by

@@ -31,7 +31,7 @@ pub const NORMALIZE_NORM_PROVEN: f64 = 2.391e-7;
 /// exact product of the same f32 inputs: `proofs/gappa/mul.g`.
 pub const MUL_ERROR_PROVEN: f64 = 7.16e-7;
 /// `| |a * b| / (|a| |b|) - 1 |` for the same inputs:
-/// `proofs/coq/mul_norm.v`, on the certificate of `proofs/gappa/mul.g`.
+/// `proofs/coq/mul_norm.v` (squared norms within 2^-20 of 1, any components).
 pub const MUL_NORM_PROVEN: f64 = 2.84e-7;
 /// The length of the error vector of `q * v` against the exact value of
 /// the same formula, relative to `|v|`, for `q` with components in

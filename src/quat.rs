@@ -219,10 +219,9 @@ impl Quat {
     /// The rotation is that of `self * other` (the scale does not change it);
     /// the norm is within
     /// [`accuracy::RENORMALIZED_CHAIN_NORM_ERROR`](crate::accuracy::RENORMALIZED_CHAIN_NORM_ERROR)
-    /// of 1 for inputs whose squared norms are within 2^-20 of 1 and whose
-    /// components lie in [-1, 1] (proven), so a chain of products started
-    /// within it stays within it for every length while its components
-    /// stay in [-1, 1].
+    /// of 1 for inputs whose squared norms are within 2^-20 of 1 (proven),
+    /// so a chain of products started within it stays within it for every
+    /// length.
     ///
     /// # Examples
     ///
