@@ -1882,10 +1882,10 @@ fn deep_slerp_f64_norm_search() {
 /// `mul_renormalized` step from its domain.
 const RENORMALIZED_NORM_PROVEN: f64 = 1.947e-7;
 
-/// Whether `q` lies in the domain of `proofs/coq/renormalized_norm.v`
-/// (mul.g's): `|q|^2` within 2^-20 of 1, every component in [-1, 1].
+/// Whether `q` lies in the domain of `proofs/coq/renormalized_norm.v`:
+/// `|q|^2` within 2^-20 of 1, whatever its components (one may exceed 1).
 fn in_product_domain(q: Quat) -> bool {
-    (norm64(q).powi(2) - 1.0).abs() <= 2f64.powi(-20) && q64(q).iter().all(|c| c.abs() <= 1.0)
+    (norm64(q).powi(2) - 1.0).abs() <= 2f64.powi(-20)
 }
 
 /// `| |a.mul_renormalized(b)| - 1 |` for `a` the first four inputs and `b`
@@ -1983,6 +1983,14 @@ fn renormalized_found_stays_within_the_proven_bound() {
         renormalized_deviation([1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0], true),
         0.0
     );
+    // A chain state with a component above 1 (the f32 after 1): inside
+    // the law's domain and the invariant's.
+    let above = f32::from_bits(1f32.to_bits() + 1);
+    let step = Quat::from_wxyz(0.6, 0.8, 0.0, 0.0);
+    assert!(in_product_domain(Quat::from_wxyz(above, 0.0, 0.0, 0.0)) && in_product_domain(step));
+    assert!((norm64(step) - 1.0).abs() <= 2.391e-7);
+    let d = renormalized_deviation([above, 0.0, 0.0, 0.0, 0.6, 0.8, 0.0, 0.0], true);
+    assert!(d <= RENORMALIZED_NORM_PROVEN, "{d:e}");
     renormalized_within(100);
 }
 
