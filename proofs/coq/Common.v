@@ -175,6 +175,23 @@ Qed.
 Lemma abs_join : forall x a, -a <= x <= a -> Rabs x <= a.
 Proof. intros x a H. apply Rabs_le. exact H. Qed.
 
+(* Four squares rounded each, summed exactly: within 2^-24 of their exact
+   sum, relative, plus 4 2^-150 (normalize's and mul_renormalized's sum
+   of squares, before the sums' own roundings). *)
+Lemma squares_sum_err : forall a b c d,
+  Rabs (rnd (a * a) + rnd (b * b) + rnd (c * c) + rnd (d * d)
+        - (a * a + b * b + c * c + d * d))
+  <= u * (a * a + b * b + c * c + d * d) + 4 * eta.
+Proof.
+  intros a b c d.
+  pose proof (rnd_err (a * a)) as Ea; rewrite (Rabs_right (a * a)) in Ea by (apply Rle_ge; nra).
+  pose proof (rnd_err (b * b)) as Eb; rewrite (Rabs_right (b * b)) in Eb by (apply Rle_ge; nra).
+  pose proof (rnd_err (c * c)) as Ec; rewrite (Rabs_right (c * c)) in Ec by (apply Rle_ge; nra).
+  pose proof (rnd_err (d * d)) as Ed; rewrite (Rabs_right (d * d)) in Ed by (apply Rle_ge; nra).
+  apply abs_split in Ea; apply abs_split in Eb; apply abs_split in Ec; apply abs_split in Ed.
+  apply abs_join. lra.
+Qed.
+
 (* The intervals of a Gappa certificate (BND x [Float2 m e, ...]) as
    inequalities between real numbers. *)
 Ltac gappa_nums :=

@@ -53,13 +53,7 @@ Proof.
   assert (Hd : 0 <= d * d <= 4) by (split; [nra|unfold S in HS; nra]).
   (* Their sum is within 2^-24 S + 4 2^-150 of S. *)
   set (T := rnd (a * a) + rnd (b * b) + rnd (c * c) + rnd (d * d)).
-  assert (HT : Rabs (T - S) <= u * S + 4 * eta).
-  { pose proof (rnd_err (a * a)) as Ea; rewrite (Rabs_right (a * a)) in Ea by lra.
-    pose proof (rnd_err (b * b)) as Eb; rewrite (Rabs_right (b * b)) in Eb by lra.
-    pose proof (rnd_err (c * c)) as Ec; rewrite (Rabs_right (c * c)) in Ec by lra.
-    pose proof (rnd_err (d * d)) as Ed; rewrite (Rabs_right (d * d)) in Ed by lra.
-    apply abs_split in Ea; apply abs_split in Eb; apply abs_split in Ec; apply abs_split in Ed.
-    apply abs_join. unfold T, S. lra. }
+  assert (HT : Rabs (T - S) <= u * S + 4 * eta) by (unfold T, S; apply squares_sum_err).
   (* The certificate: (n - N) / N within 0x1.81p-23. *)
   apply Classical_Prop.NNPP; intro Hn.
   refine (Laws.normalize.l1 A B C D _ _ _ _).

@@ -63,13 +63,7 @@ Proof.
   assert (H3 : 0 <= p3 * p3 <= 2) by (split; [nra|unfold P in HP; nra]).
   (* Their sum is within 2^-24 P + 4 2^-150 of P. *)
   set (T := rnd (p0 * p0) + rnd (p1 * p1) + rnd (p2 * p2) + rnd (p3 * p3)).
-  assert (HT : Rabs (T - P) <= u * P + 4 * eta).
-  { pose proof (rnd_err (p0 * p0)) as E0; rewrite (Rabs_right (p0 * p0)) in E0 by lra.
-    pose proof (rnd_err (p1 * p1)) as E1; rewrite (Rabs_right (p1 * p1)) in E1 by lra.
-    pose proof (rnd_err (p2 * p2)) as E2; rewrite (Rabs_right (p2 * p2)) in E2 by lra.
-    pose proof (rnd_err (p3 * p3)) as E3; rewrite (Rabs_right (p3 * p3)) in E3 by lra.
-    apply abs_split in E0; apply abs_split in E1; apply abs_split in E2; apply abs_split in E3.
-    apply abs_join. unfold T, P. lra. }
+  assert (HT : Rabs (T - P) <= u * P + 4 * eta) by (unfold T, P; apply squares_sum_err).
   assert (HTP : -(u + 8 * eta) <= (T - P) / P <= u + 8 * eta).
   { apply abs_split in HT. pose proof eta_pos. pose proof u_pos.
     set (r := (T - P) / P).
