@@ -475,20 +475,22 @@ Proof.
       assert (((A0 + A1 + A2 + A3) * nb) * ((A0 + A1 + A2 + A3) * nb) <= 4 * (na * na) * (nb * nb))
         by (replace (((A0 + A1 + A2 + A3) * nb) * ((A0 + A1 + A2 + A3) * nb))
               with ((A0 + A1 + A2 + A3) * (A0 + A1 + A2 + A3) * (nb * nb)) by ring;
-            apply Rmult_le_compat_r; nra).
+            apply Rmult_le_compat_r; [apply Rle_0_sqr | exact HA2]).
       rewrite HN. lra. }
     assert (HS1s : Rabs s10 * Rabs s10 + Rabs s11 * Rabs s11 + Rabs s12 * Rabs s12 + Rabs s13 * Rabs s13 <= N * N).
     { rewrite !sq_abs. rewrite HN.
       replace (s10 * s10 + s11 * s11 + s12 * s12 + s13 * s13) with ((a0 * a0 + a1 * a1) * (nb * nb))
         by (rewrite Hnb; unfold s10, s11, s12, s13; ring).
       replace (na * nb * (na * nb)) with ((na * na) * (nb * nb)) by ring.
-      apply Rmult_le_compat_r; nra. }
+      apply Rmult_le_compat_r; [apply Rle_0_sqr|].
+      rewrite Hna. pose proof (Rle_0_sqr a2). pose proof (Rle_0_sqr a3). unfold Rsqr in *. lra. }
     assert (HS2s : Rabs s20 * Rabs s20 + Rabs s21 * Rabs s21 + Rabs s22 * Rabs s22 + Rabs s23 * Rabs s23 <= N * N).
     { rewrite !sq_abs. rewrite HN.
       replace (s20 * s20 + s21 * s21 + s22 * s22 + s23 * s23) with ((a0 * a0 + a1 * a1 + a2 * a2) * (nb * nb))
         by (rewrite Hnb; unfold s20, s21, s22, s23; ring).
       replace (na * nb * (na * nb)) with ((na * na) * (nb * nb)) by ring.
-      apply Rmult_le_compat_r; nra. }
+      apply Rmult_le_compat_r; [apply Rle_0_sqr|].
+      rewrite Hna. pose proof (Rle_0_sqr a3). unfold Rsqr in *. lra. }
     assert (HPs : Rabs P0 * Rabs P0 + Rabs P1 * Rabs P1 + Rabs P2 * Rabs P2 + Rabs P3 * Rabs P3 = N * N)
       by (rewrite !sq_abs; symmetry; apply n4_sq).
     pose proof (sq4 T0 (Rabs s10) (Rabs s20) (Rabs P0)); pose proof (sq4 T1 (Rabs s11) (Rabs s21) (Rabs P1));
