@@ -1534,26 +1534,8 @@ fn slerp_f32_search(climbs: usize, pair: usize, steps: usize, seed: u64) -> [[f6
         let a = d.unit_quat();
         let b = match c % 4 {
             0 => d.unit_quat(),
-            1 => {
-                let s = 2f32.powi(-(d.below(20) as i32) - 4);
-                Quat::from_wxyz(
-                    a.w + s * d.uniform(-1.0, 1.0),
-                    a.x + s * d.uniform(-1.0, 1.0),
-                    a.y + s * d.uniform(-1.0, 1.0),
-                    a.z + s * d.uniform(-1.0, 1.0),
-                )
-            }
-            2 => {
-                // Near a right angle: b minus its part along a.
-                let b = d.unit_quat();
-                let ab = a.dot(b);
-                Quat::from_wxyz(
-                    b.w - ab * a.w,
-                    b.x - ab * a.x,
-                    b.y - ab * a.y,
-                    b.z - ab * a.z,
-                )
-            }
+            1 => nearby(&mut d, a, 20),
+            2 => right_angled_to(&mut d, a),
             _ => pool[d.below(pool.len().min(pair.max(1)))],
         };
         let a = if c % 4 == 3 {
@@ -1674,6 +1656,31 @@ fn slerp_f32_plane_deviations(v: [f32; 9]) -> [f64; 2] {
     slerp_f32_deviations(v, (0.0, 1.0))
 }
 
+/// A start for slerp's searches: `a` moved by up to `2^-k` per component,
+/// `k` from 4 to `3 + binades`.
+fn nearby(d: &mut Draws, a: Quat, binades: usize) -> Quat {
+    let s = 2f32.powi(-(d.below(binades) as i32) - 4);
+    Quat::from_wxyz(
+        a.w + s * d.uniform(-1.0, 1.0),
+        a.x + s * d.uniform(-1.0, 1.0),
+        a.y + s * d.uniform(-1.0, 1.0),
+        a.z + s * d.uniform(-1.0, 1.0),
+    )
+}
+
+/// A start for slerp's searches near a right angle to `a`: a random unit
+/// quaternion minus its part along `a`.
+fn right_angled_to(d: &mut Draws, a: Quat) -> Quat {
+    let b = d.unit_quat();
+    let ab = a.dot(b);
+    Quat::from_wxyz(
+        b.w - ab * a.w,
+        b.x - ab * a.x,
+        b.y - ab * a.y,
+        b.z - ab * a.z,
+    )
+}
+
 /// The largest errors of [`slerp_f32_plane_deviations`] that `climbs`
 /// climbs find, from random pairs, pairs 2^-10 to 2^-4 apart, pairs near
 /// a right angle and pairs of the results of `normalize` farthest from
@@ -1691,25 +1698,8 @@ fn slerp_f32_plane_search(climbs: usize, steps: usize, seed: u64) -> [f64; 2] {
         };
         let b = match c % 4 {
             0 => d.unit_quat(),
-            1 => {
-                let s = 2f32.powi(-(d.below(7) as i32) - 4);
-                Quat::from_wxyz(
-                    a.w + s * d.uniform(-1.0, 1.0),
-                    a.x + s * d.uniform(-1.0, 1.0),
-                    a.y + s * d.uniform(-1.0, 1.0),
-                    a.z + s * d.uniform(-1.0, 1.0),
-                )
-            }
-            2 => {
-                let b = d.unit_quat();
-                let ab = a.dot(b);
-                Quat::from_wxyz(
-                    b.w - ab * a.w,
-                    b.x - ab * a.x,
-                    b.y - ab * a.y,
-                    b.z - ab * a.z,
-                )
-            }
+            1 => nearby(&mut d, a, 7),
+            2 => right_angled_to(&mut d, a),
             _ => pool[d.below(pool.len())],
         };
         let alpha = match d.below(3) {
