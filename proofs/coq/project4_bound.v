@@ -270,7 +270,8 @@ Proof.
   assert (Hk2 : u <= k2) by (unfold k2; nra).
   pose proof (near_weaken _ _ _ _ _ _ _ (near_product a2 u2)
                 (Rmult_le_pos _ _ (Rabs_pos a2) (Rabs_pos u2)) Hk2 (Rle_refl eta)) as M2.
-  assert (He2 : 0 <= (1 + u) * (eta + eta) + eta) by nra.
+  assert (He2 : 0 <= (1 + u) * (eta + eta) + eta)
+    by (pose proof u_pos; pose proof eta_pos; apply Rplus_le_le_0_compat; [apply Rmult_le_pos|]; lra).
   pose proof (near_add _ _ _ _ _ _ _ _ _ (Rle_trans _ _ _ (Rlt_le _ _ Hu) Hk2) He2
                 (Rlt_le _ _ He) D1 M2) as D2.
   set (k3 := u + k2 + u * k2) in D2.
@@ -353,16 +354,17 @@ Proof.
       by (apply Rmult_le_compat; try apply Rabs_pos; lra).
     assert (Rabs (v - V) * Rabs TT <= (theta * Rabs V + eta) * Rabs TT)
       by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    assert (0 <= Rabs V * al) by nra.
-    assert (0 <= Rabs V * Rabs TT) by nra.
-    assert (0 <= eta * al) by nra.
+    assert (0 <= Rabs V * al) by (apply Rmult_le_pos; [apply Rabs_pos | lra]).
+    assert (0 <= Rabs V * Rabs TT) by (apply Rmult_le_pos; apply Rabs_pos).
+    assert (0 <= eta * al) by (apply Rmult_le_pos; [pose proof eta_pos | ]; lra).
     assert (eta * Rabs TT <= eta * al) by (apply Rmult_le_compat_l; lra).
     unfold kk, A, B, theta, tau in *. rewrite Hu1 in *. lra. }
   assert (HP0 : Rabs (p0 - T * b0) <= kk * Rabs U0 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv0).
   assert (HP1 : Rabs (p1 - T * b1) <= kk * Rabs U1 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv1).
   assert (HP2 : Rabs (p2 - T * b2) <= kk * Rabs U2 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv2).
   assert (HP3 : Rabs (p3 - T * b3) <= kk * Rabs U3 + 3 * eta * al + eta) by (rewrite HP; apply Hp; exact Hv3).
-  assert (Hd : 0 <= 3 * eta * al + eta) by nra.
+  assert (Hd : 0 <= 3 * eta * al + eta)
+    by (pose proof eta_pos; assert (0 <= eta * al) by (apply Rmult_le_pos; lra); lra).
   assert (HK : 0 <= kk) by (unfold kk, A, B; nra).
   assert (HBT : B * Rabs TT <= B * al) by (apply Rmult_le_compat_l; [unfold B; lra|exact HTT]).
   assert (Hsmall : 2 * (3 * eta * al + eta) <= 1e-14 * al).
@@ -405,8 +407,9 @@ Proof.
       assert (u * Rabs (a - p) <= u * (Rabs (a - P) + (kk * Rabs Ub + 3 * eta * al + eta)))
         by (apply Rmult_le_compat_l; lra).
       pose proof (Rabs_pos Ub). lra. }
-    assert (Hd2 : 0 <= (1 + u) * (3 * eta * al + eta) + eta) by nra.
-    assert (HK2 : 0 <= (1 + u) * kk) by nra.
+    assert (Hd2 : 0 <= (1 + u) * (3 * eta * al + eta) + eta)
+      by (pose proof u_pos; pose proof eta_pos; apply Rplus_le_le_0_compat; [apply Rmult_le_pos|]; lra).
+    assert (HK2 : 0 <= (1 + u) * kk) by (pose proof u_pos; apply Rmult_le_pos; lra).
     pose proof (norm4_comb _ _ _ _ U0 U1 U2 U3 R0 R1 R2 R3 _ _ _ HK2 (Rlt_le _ _ Hu) Hd2
                   (Hr a0 p0 (T * b0) U0 HP0) (Hr a1 p1 (T * b1) U1 HP1)
                   (Hr a2 p2 (T * b2) U2 HP2) (Hr a3 p3 (T * b3) U3 HP3)) as N4.
