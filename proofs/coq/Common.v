@@ -175,6 +175,15 @@ Qed.
 Lemma abs_join : forall x a, -a <= x <= a -> Rabs x <= a.
 Proof. intros x a H. apply Rabs_le. exact H. Qed.
 
+(* A square at most a power of two rounds to at most that power. *)
+Lemma rnd_square_le : forall e t, (-149 <= e <= 127)%Z ->
+  0 <= t * t <= bpow radix2 e -> 0 <= rnd (t * t) <= bpow radix2 e.
+Proof.
+  intros e t He Ht. split.
+  - rewrite <- rnd_0. apply rnd_monotone. lra.
+  - rewrite <- (rnd_bpow e He). apply rnd_monotone. lra.
+Qed.
+
 (* Four squares rounded each, summed exactly: within 2^-24 of their exact
    sum, relative, plus 4 2^-150 (normalize's and mul_renormalized's sum
    of squares, before the sums' own roundings). *)

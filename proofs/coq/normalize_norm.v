@@ -43,10 +43,8 @@ Proof.
   { unfold N. rewrite <- sqrt_1. apply sqrt_le_1_alt. lra. }
   (* The rounded squares. *)
   assert (Sq : forall t, 0 <= t * t <= 4 -> 0 <= rnd (t * t) <= 4).
-  { intros t Ht. split.
-    - rewrite <- rnd_0. apply rnd_monotone. lra.
-    - replace 4 with (bpow radix2 2) by (simpl; lra).
-      rewrite <- (rnd_bpow 2) by lia. apply rnd_monotone. simpl. lra. }
+  { intros t Ht. replace 4 with (bpow radix2 2) by (simpl; lra).
+    apply rnd_square_le; [lia | simpl; lra]. }
   assert (Ha : 0 <= a * a <= 4) by (split; [nra|unfold S in HS; nra]).
   assert (Hb : 0 <= b * b <= 4) by (split; [nra|unfold S in HS; nra]).
   assert (Hc : 0 <= c * c <= 4) by (split; [nra|unfold S in HS; nra]).

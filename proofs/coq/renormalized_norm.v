@@ -53,10 +53,8 @@ Proof.
   assert (HQ : sqrt P * sqrt P = P) by (apply sqrt_sqrt; lra).
   (* The rounded squares, in [0, 2]. *)
   assert (Sq : forall t, 0 <= t * t <= 2 -> 0 <= rnd (t * t) <= 2).
-  { intros t Ht. split.
-    - rewrite <- rnd_0. apply rnd_monotone. lra.
-    - replace 2 with (bpow radix2 1) by (simpl; lra).
-      rewrite <- (rnd_bpow 1) by lia. apply rnd_monotone. simpl. lra. }
+  { intros t Ht. replace 2 with (bpow radix2 1) by (simpl; lra).
+    apply rnd_square_le; [lia | simpl; lra]. }
   assert (H0 : 0 <= p0 * p0 <= 2) by (split; [nra|unfold P in HP; nra]).
   assert (H1 : 0 <= p1 * p1 <= 2) by (split; [nra|unfold P in HP; nra]).
   assert (H2 : 0 <= p2 * p2 <= 2) by (split; [nra|unfold P in HP; nra]).
