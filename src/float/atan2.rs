@@ -104,6 +104,18 @@ mod tests {
     use crate::accuracy::{ATAN2_MAX_ABS_ERROR, ATAN2_MAX_ULP, ATAN_POLY_MAX_ULP};
     use crate::float::sweep::{floats, ulp, ulps, Worst};
 
+    /// The step `proofs/gappa/atan2_outer.g` takes as a hypothesis for a
+    /// negative x in the upper branch: `phi - PI_LO` rounds to `phi + 2^-23`
+    /// for every f32 `phi` in [1, 2 - 2^-23].
+    #[test]
+    fn pi_lo_moves_every_phi_of_the_upper_branch_by_one_ulp() {
+        let step = f32::EPSILON;
+        for bits in 1.0f32.to_bits()..2.0f32.to_bits() {
+            let phi = f32::from_bits(bits);
+            assert_eq!(phi - PI_LO, phi + step, "{phi}");
+        }
+    }
+
     /// The real numbers that round to the f32 `t >= 0`: from the midpoint
     /// with the f32 below to the midpoint with the one above.
     fn rounding_interval(t: f32) -> (f64, f64) {
